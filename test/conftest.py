@@ -1,0 +1,150 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Shared fixtures: a private DDS domain per test and real processes of our executables."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+import contextlib
+import fcntl
+import importlib.util
+import os
+from pathlib import Path
+import signal
+import subprocess
+import sys
+import tempfile
+from typing import IO
+
+import pytest
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+_LOCK_DIR = Path(tempfile.gettempdir()) / 'tf_demo_domains'
+# Domain ids 0..232 are valid for Cyclone's port mapping; keep clear of 0 (the user's default).
+_FIRST_DOMAIN, _LAST_DOMAIN = 100, 230
+
+
+@contextlib.contextmanager
+def _exclusive_domain() -> Iterator[int]:
+    """Hold an inter-process lock on one free domain id for the duration of a test."""
+    _LOCK_DIR.mkdir(exist_ok=True)
+    start = _FIRST_DOMAIN + os.getpid() % (_LAST_DOMAIN - _FIRST_DOMAIN)
+    span = _LAST_DOMAIN - _FIRST_DOMAIN
+    for offset in range(span):
+        domain = _FIRST_DOMAIN + (start - _FIRST_DOMAIN + offset) % span
+        handle: IO[str] = open(_LOCK_DIR / f'{domain}.lock', 'w')  # noqa: SIM115
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            handle.close()
+            continue
+        try:
+            yield domain
+        finally:
+            fcntl.flock(handle, fcntl.LOCK_UN)
+            handle.close()
+        return
+    msg = 'no free DDS domain id for the test'
+    raise RuntimeError(msg)
+
+
+@pytest.fixture
+def dds_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
+    """Environment for a test that talks DDS: its own domain id, loopback-only discovery.
+
+    The variables are also set in this process, so in-process nodes use the same domain.
+    """
+    with _exclusive_domain() as domain:
+        env = dict(os.environ)
+        env.update(
+            {
+                'ROS_DOMAIN_ID': str(domain),
+                'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST',
+                'TF_DEMO_BACKEND': 'dds',
+                'PYTHONUNBUFFERED': '1',
+                'PYTHONPATH': os.pathsep.join(
+                    p for p in (str(REPO_ROOT), os.environ.get('PYTHONPATH', '')) if p
+                ),
+            }
+        )
+        env.pop('ROS_LOCALHOST_ONLY', None)
+        env.pop('CYCLONEDDS_URI', None)
+        for key in ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE', 'TF_DEMO_BACKEND'):
+            monkeypatch.setenv(key, env[key])
+        monkeypatch.delenv('ROS_LOCALHOST_ONLY', raising=False)
+        monkeypatch.delenv('CYCLONEDDS_URI', raising=False)
+        yield env
+
+
+def executable_command(name: str, *args: str) -> list[str]:
+    """Command line that runs one of this package's executables from the source tree."""
+    for layer in ('nodes', 'cli'):
+        module = f'tf_demo.{layer}.{name}'
+        if importlib.util.find_spec(module) is not None:
+            code = f'import sys; from {module} import main; sys.exit(main())'
+            return [sys.executable, '-c', code, *args]
+    msg = f'no executable named {name!r} in tf_demo.nodes or tf_demo.cli'
+    raise LookupError(msg)
+
+
+class Processes:
+    """Starts executables as real processes and stops every one of them at the end of a test."""
+
+    def __init__(self, env: dict[str, str], workdir: Path) -> None:
+        self._env = env
+        self._workdir = workdir
+        self._started: list[subprocess.Popen[str]] = []
+
+    def start(
+        self,
+        name: str,
+        *args: str,
+        env: dict[str, str] | None = None,
+        stdin: int | None = subprocess.DEVNULL,
+    ) -> subprocess.Popen[str]:
+        """Start executable `name` with `args`; stdout and stderr are pipes of text."""
+        process = subprocess.Popen(
+            executable_command(name, *args),
+            env=env or self._env,
+            cwd=self._workdir,
+            stdin=stdin,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        self._started.append(process)
+        return process
+
+    def stop_all(self) -> None:
+        """SIGINT every process still running, then kill what does not exit within 5 s."""
+        for process in self._started:
+            if process.poll() is None:
+                process.send_signal(signal.SIGINT)
+        for process in self._started:
+            try:
+                process.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+
+
+@pytest.fixture
+def spawn(dds_env: dict[str, str], tmp_path: Path) -> Iterator[Processes]:
+    """Start this package's executables as real processes on the test's private domain."""
+    processes = Processes(dds_env, tmp_path)
+    try:
+        yield processes
+    finally:
+        processes.stop_all()
