@@ -41,7 +41,14 @@ setup(
     ],
     package_data={'tf_demo': ['py.typed']},
     python_requires='>=3.10',
-    install_requires=['setuptools', 'numpy>=1.24', 'PyYAML>=5.4', 'lxml', 'yourdfpy>=0.0.56', 'xacro'],
+    install_requires=[
+        'setuptools',
+        'numpy>=1.24',
+        'PyYAML>=5.4',
+        'lxml',
+        'yourdfpy>=0.0.56',
+        'xacro',
+    ],
     extras_require={
         'dds': ['cyclonedds==11.0.1'],
         'test': [
