@@ -12,4 +12,46 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""tf_demo: a pure-Python tf2 for ROS 2 Jazzy and the standalone world."""
+"""
+Robot descriptions: URDF and xacro loading, strict validation, KDL-semantics kinematics.
+
+``RobotModel.from_file(path, mappings)`` / ``RobotModel.from_string(xml)`` are the entry points
+(design.md section 3.2); every problem is a :class:`UrdfError` subclass whose message names the
+file, the element and the reason.
+"""
+
+from tf_demo.urdf.description import JointDescription
+from tf_demo.urdf.description import Limit
+from tf_demo.urdf.description import Mimic
+from tf_demo.urdf.description import parse_robot
+from tf_demo.urdf.description import RobotDescription
+from tf_demo.urdf.errors import UrdfBrokenRefError
+from tf_demo.urdf.errors import UrdfError
+from tf_demo.urdf.errors import UrdfMalformedError
+from tf_demo.urdf.errors import UrdfUnsupportedError
+from tf_demo.urdf.loading import expand_xacro
+from tf_demo.urdf.loading import find_package_share
+from tf_demo.urdf.loading import parse_xacro_args
+from tf_demo.urdf.loading import read_description
+from tf_demo.urdf.model import JointTransform
+from tf_demo.urdf.model import kdl_quaternion
+from tf_demo.urdf.model import RobotModel
+
+__all__ = [
+    'JointDescription',
+    'JointTransform',
+    'Limit',
+    'Mimic',
+    'RobotDescription',
+    'RobotModel',
+    'UrdfBrokenRefError',
+    'UrdfError',
+    'UrdfMalformedError',
+    'UrdfUnsupportedError',
+    'expand_xacro',
+    'find_package_share',
+    'kdl_quaternion',
+    'parse_robot',
+    'parse_xacro_args',
+    'read_description',
+]
