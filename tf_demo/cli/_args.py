@@ -1,0 +1,309 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Pure command-line parsing for the tf tools, with upstream's rules, texts and exit codes.
+
+Nothing here touches ROS or DDS: every function maps a list of strings to a value or an error, so
+the parsing is tested without processes. ``--ros-args`` sections are split off first, as
+``rclcpp::remove_ros_arguments`` and ``rclpy.utilities.remove_ros_args`` do.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from dataclasses import field
+import math
+import re
+
+from tf_demo.core.math3d import quat_from_rpy
+
+_C_FLOAT_PREFIX = re.compile(
+    r"""
+    \s*
+    (?P<number>
+        [+-]?
+        (?:
+            0[xX](?:[0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)(?:[pP][+-]?[0-9]+)?
+          | (?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?
+          | (?i:infinity|inf)
+          | (?i:nan)(?:\([0-9A-Za-z_]*\))?
+        )
+    )
+    """,
+    re.VERBOSE,
+)
+
+
+def split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
+    """
+    Split ``argv`` into (tool arguments, ROS arguments).
+
+    Every ``--ros-args`` section runs to the next ``--`` or the end, as in rclcpp.
+    """
+    tool_args: list[str] = []
+    ros_args: list[str] = []
+    in_ros = False
+    for token in argv:
+        if token == '--ros-args':
+            in_ros = True
+            ros_args.append(token)
+        elif in_ros and token == '--':
+            in_ros = False
+        elif in_ros:
+            ros_args.append(token)
+        else:
+            tool_args.append(token)
+    return tool_args, ros_args
+
+
+def parse_c_float(text: str) -> tuple[float, int] | None:
+    """
+    Parse the longest numeric prefix of ``text`` as C's ``strtod`` does.
+
+    :return: (value, characters consumed) or None when no number starts the text (leading white
+        space is skipped, as ``strtod`` does). Hex floats, ``inf`` and ``nan`` are accepted.
+    """
+    match = _C_FLOAT_PREFIX.match(text)
+    if match is None:
+        return None
+    number = match.group('number')
+    body = number.lstrip('+-')
+    negative = number.startswith('-')
+    lowered = body.lower()
+    if lowered.startswith('0x'):
+        mantissa = lowered if 'p' in lowered else lowered + 'p0'
+        value = float.fromhex(mantissa)
+    elif lowered.startswith('inf'):
+        value = math.inf
+    elif lowered.startswith('nan'):
+        value = math.nan
+    else:
+        value = float(body)
+    return (-value if negative else value), match.end()
+
+
+# ---------------------------------------------------------------------------------------------
+# static_transform_publisher
+
+STATIC_VALUE_FLAGS = (
+    '--x',
+    '--y',
+    '--z',
+    '--qx',
+    '--qy',
+    '--qz',
+    '--qw',
+    '--roll',
+    '--pitch',
+    '--yaw',
+    '--frame-id',
+    '--child-frame-id',
+)
+OLD_STYLE_WARNING = 'Old-style arguments are deprecated; see --help for new-style arguments'
+
+
+@dataclass
+class StaticTransformArgs:
+    """What static_transform_publisher's command line asks for (or the parse error)."""
+
+    translation: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    rotation: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 1.0)
+    frame_id: str = ''
+    child_frame_id: str = ''
+    help: bool = False
+    error: str = ''
+    warnings: list[str] = field(default_factory=list)
+
+
+def parse_static_transform_args(args: list[str]) -> StaticTransformArgs:
+    """
+    Parse static_transform_publisher's arguments (without the program name) as upstream does.
+
+    The rules of tf2_ros' ``static_transform_broadcaster_program.cpp`` (Jazzy): flags take one
+    value each, numbers take the longest numeric prefix (``stod``), unknown tokens are positional,
+    8 or 9 positional tokens are the deprecated forms ``x y z yaw pitch roll frame child`` and
+    ``x y z qx qy qz qw frame child``; nothing is normalized. The first error wins and is returned
+    in ``error``; ``help`` is honoured only when parsing succeeded.
+    """
+    result = StaticTransformArgs()
+    translation = [0.0, 0.0, 0.0]
+    quat = [0.0, 0.0, 0.0, 1.0]
+    rpy = [0.0, 0.0, 0.0]
+    saw = {'frame': False, 'quat': False, 'rpy': False, 'trans': False}
+    positional: list[str] = []
+
+    def number(name: str, text: str) -> float | None:
+        parsed = parse_c_float(text)
+        if parsed is None or (math.isinf(parsed[0]) and not _spells_infinity(text)):
+            result.error = f'Failed to parse {name} argument as float'
+            return None
+        return parsed[0]
+
+    def apply(name: str, key: str, value_text: str) -> bool:
+        if key in ('--frame-id', '--child-frame-id'):
+            if key == '--frame-id':
+                result.frame_id = value_text
+            else:
+                result.child_frame_id = value_text
+            saw['frame'] = True
+            return True
+        value = number(name, value_text)
+        if value is None:
+            return False
+        axis = key.lstrip('-')
+        if axis in ('x', 'y', 'z'):
+            translation['xyz'.index(axis)] = value
+            saw['trans'] = True
+        elif axis in ('qx', 'qy', 'qz', 'qw'):
+            quat[('qx', 'qy', 'qz', 'qw').index(axis)] = value
+            saw['quat'] = True
+        else:
+            rpy[('roll', 'pitch', 'yaw').index(axis)] = value
+            saw['rpy'] = True
+        return True
+
+    index = 0
+    while index < len(args):
+        token = args[index]
+        if token in ('--help', '-h'):
+            result.help = True
+        elif token in STATIC_VALUE_FLAGS:
+            if index == len(args) - 1:
+                result.error = f'Not enough arguments for {token}'
+                return result
+            index += 1
+            if not apply(token, token, args[index]):
+                return result
+        else:
+            positional.append(token)
+        index += 1
+
+    if result.help:
+        return result
+    if saw['rpy'] and saw['quat']:
+        result.error = 'Cannot specify both quaternion and Euler rotations'
+        return result
+    if saw['rpy']:
+        quat = list(quat_from_rpy(*rpy))
+
+    if len(positional) in (8, 9):
+        result.warnings.append(OLD_STYLE_WARNING)
+        if saw['frame'] or saw['trans'] or saw['quat']:
+            result.error = 'Cannot specify both new-style (flags) and old-style (arguments)'
+            return result
+        names = ['x', 'y', 'z']
+        names += ['yaw', 'pitch', 'roll'] if len(positional) == 8 else ['qx', 'qy', 'qz', 'qw']
+        for name, text in zip(names, positional, strict=False):
+            if not apply(name, '--' + name, text):
+                return result
+        if len(positional) == 8:
+            quat = list(quat_from_rpy(*rpy))
+        result.frame_id, result.child_frame_id = positional[-2], positional[-1]
+    elif positional:
+        result.error = 'Extra unparsed arguments on command-line'
+        return result
+
+    if not result.frame_id:
+        result.error = 'Frame id must not be empty'
+    elif not result.child_frame_id:
+        result.error = 'Child frame id must not be empty'
+    result.translation = (translation[0], translation[1], translation[2])
+    result.rotation = (quat[0], quat[1], quat[2], quat[3])
+    return result
+
+
+def _spells_infinity(text: str) -> bool:
+    """Whether ``text`` names infinity itself (``strtod`` overflow is an error, ``inf`` is not)."""
+    return 'inf' in text.lower()
+
+
+# ---------------------------------------------------------------------------------------------
+# tf_echo
+
+
+@dataclass
+class EchoArgs:
+    """What tf_echo's command line asks for, or the message and exit code of a refusal."""
+
+    source_frame: str = ''
+    target_frame: str = ''
+    rate_hz: float = 1.0
+    precision: int = 3
+    limit: int | None = None
+    json: bool = False
+    exit_code: int = 0
+    error: str = ''
+    show_usage: bool = False
+
+
+ECHO_EXTRA_FLAGS = ('-p', '--precision', '--limit', '--json')
+
+
+def parse_echo_args(args: list[str]) -> EchoArgs:
+    """
+    Parse tf_echo's arguments (without the program name and ROS arguments).
+
+    Upstream rules (tf2_echo, Jazzy): two or three positional arguments, else the usage text and
+    exit code 1; a rate that is not a number exits with 2, a number with trailing characters with
+    3. Additions, off by default: ``-p/--precision N``, ``--limit N`` and ``--json``.
+    """
+    result = EchoArgs()
+    positional: list[str] = []
+    index = 0
+    while index < len(args):
+        token = args[index]
+        if token == '--json':
+            result.json = True
+        elif token in ('-p', '--precision', '--limit'):
+            if index == len(args) - 1:
+                result.error = f'{token} needs a whole number'
+                result.exit_code = 2
+                return result
+            index += 1
+            value = args[index]
+            if not re.fullmatch(r'[0-9]+', value) or (token == '--limit' and int(value) == 0):
+                kind = 'a positive whole number' if token == '--limit' else 'a whole number'
+                result.error = f'{token} needs {kind}, got {value!r}'
+                result.exit_code = 2
+                return result
+            if token == '--limit':
+                result.limit = int(value)
+            else:
+                result.precision = min(int(value), 17)
+        else:
+            positional.append(token)
+        index += 1
+
+    if len(positional) not in (2, 3):
+        result.show_usage = True
+        result.exit_code = 1
+        return result
+    result.source_frame, result.target_frame = positional[0], positional[1]
+    if len(positional) == 3:
+        text = positional[2]
+        parsed = parse_c_float(text)
+        failure = f"Failed to convert rate argument '{text}' to a floating-point number"
+        if parsed is None:
+            result.error, result.exit_code = failure, 2
+            return result
+        if parsed[1] != len(text):
+            result.error, result.exit_code = failure, 3
+            return result
+        if not parsed[0] > 0.0 or math.isinf(parsed[0]):
+            result.error = f"echo_rate must be a positive finite number of Hz, got '{text}'"
+            result.exit_code = 2
+            return result
+        result.rate_hz = parsed[0]
+    return result
