@@ -1,0 +1,818 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+ROS 2's wire conventions on top of Cyclone DDS (cyclonedds-python 11.0.1).
+
+This module is the only place that knows how a ROS entity looks on DDS
+(``spec/ros2_dds_wire.md``): the domain and discovery configuration taken from ``ROS_DOMAIN_ID``,
+``ROS_AUTOMATIC_DISCOVERY_RANGE``, ``ROS_LOCALHOST_ONLY`` and ``ROS_STATIC_PEERS``; the mapping of
+ROS QoS onto Cyclone policies as ``rmw_cyclonedds`` builds it; ``rt/`` topic names and
+``pkg::msg::dds_::Name_`` type names; and raw-bytes writers and readers.
+
+The payload never passes through cyclonedds-python's interpreted serializer: writers take the
+CDR bytes produced by ``tf_demo.msgs.cdr`` and readers hand back the received bytes
+(``ddspy_write``/``ddspy_take``, private to cyclonedds-python, hence the exact version pin).
+Topics are created from a one-octet placeholder type that carries the ROS type name, and its
+XTypes type information is withdrawn before any endpoint exists, so readers and writers are
+announced exactly like rmw_cyclonedds' (no TypeInformation, XCDR1 only) and match ROS peers by
+type name.
+
+The pure parts (configuration, names, QoS) are plain functions; :class:`DdsParticipant` is the
+imperative shell around the one DDS participant of the process.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from collections.abc import Mapping
+import contextlib
+import ctypes
+import enum
+import itertools
+import os
+import re
+import threading
+from typing import Any
+from typing import NamedTuple
+
+from cyclonedds import _clayer
+from cyclonedds.builtin import BuiltinDataReader
+from cyclonedds.builtin import BuiltinTopicDcpsPublication
+from cyclonedds.builtin import BuiltinTopicDcpsSubscription
+from cyclonedds.core import InstanceState
+from cyclonedds.core import Listener as _CycloneListener
+from cyclonedds.core import ReadCondition
+from cyclonedds.core import SampleState
+from cyclonedds.core import ViewState
+from cyclonedds.domain import Domain
+from cyclonedds.domain import DomainParticipant
+from cyclonedds.idl import make_idl_struct
+from cyclonedds.idl import types as idl_types
+from cyclonedds.internal import DDS
+from cyclonedds.qos import _CQos as _CycloneCQos
+from cyclonedds.qos import Policy
+from cyclonedds.qos import Qos
+
+__all__ = [
+    'DDS_INFINITY',
+    'DISCOVERY_INFO_TOPIC',
+    'DISCOVERY_INFO_TYPE',
+    'LOOPBACK_DISCOVERY_XML',
+    'DdsParticipant',
+    'DdsWireError',
+    'DiscoveryConfig',
+    'DiscoveryRange',
+    'EndpointQos',
+    'RawReader',
+    'RawWriter',
+    'WaitSet',
+    'cyclone_qos',
+    'dds_topic_name',
+    'dds_type_name',
+    'discovery_config_from_env',
+    'domain_id_from_env',
+    'endpoint_qos_from_profile',
+    'get_participant',
+    'incompatible_policy_name',
+    'ros_topic_name',
+]
+
+DDS_INFINITY = 0x7FFFFFFFFFFFFFFF
+"""Cyclone's infinite duration (``DDS_INFINITY``)."""
+
+_RMW_DURATION_INFINITE_NS = 9223372036 * 1_000_000_000 + 854775807
+"""``RMW_DURATION_INFINITE`` ({9223372036 s, 854775807 ns}) in nanoseconds."""
+
+DISCOVERY_INFO_TOPIC = 'ros_discovery_info'
+DISCOVERY_INFO_TYPE = 'rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_'
+
+ROS_TOPIC_PREFIX = 'rt'
+
+LOOPBACK_DISCOVERY_XML = (
+    '<CycloneDDS><Domain id="any"><General><Interfaces><NetworkInterface name="lo"/></Interfaces>'
+    '<AllowMulticast>false</AllowMulticast></General>'
+    '<Discovery><ParticipantIndex>auto</ParticipantIndex>'
+    '<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex>'
+    '<Peers><Peer address="127.0.0.1"/>{extra_peers}</Peers></Discovery></Domain></CycloneDDS>'
+)
+"""Loopback-only unicast discovery that meets both Cyclone 0.10 and 11 (spec §7.3)."""
+
+
+class DdsWireError(RuntimeError):
+    """A DDS entity could not be created or used; the message says which and why."""
+
+
+# --------------------------------------------------------------------------------------------
+# Domain and discovery configuration (pure)
+# --------------------------------------------------------------------------------------------
+
+
+def domain_id_from_env(env: Mapping[str, str]) -> int:
+    """
+    Return the DDS domain id from ``ROS_DOMAIN_ID`` as rcl reads it (default 0).
+
+    :raises DdsWireError: when the value is not a non-negative integer that Cyclone accepts.
+    """
+    text = env.get('ROS_DOMAIN_ID', '').strip()
+    if not text:
+        return 0
+    try:
+        value = int(text, 0)
+    except ValueError:
+        value = -1
+    if not 0 <= value <= 232:
+        msg = f'ROS_DOMAIN_ID={text!r} is not a valid domain id (expected an integer 0..232)'
+        raise DdsWireError(msg)
+    return value
+
+
+class DiscoveryRange(enum.Enum):
+    """``ROS_AUTOMATIC_DISCOVERY_RANGE`` values (rmw ``rmw_automatic_discovery_range_t``)."""
+
+    OFF = 'OFF'
+    LOCALHOST = 'LOCALHOST'
+    SUBNET = 'SUBNET'
+    SYSTEM_DEFAULT = 'SYSTEM_DEFAULT'
+
+
+class DiscoveryConfig(NamedTuple):
+    """The resolved discovery settings and the warnings rcl would print while resolving them."""
+
+    discovery_range: DiscoveryRange
+    static_peers: tuple[str, ...]
+    warnings: tuple[str, ...]
+
+
+def discovery_config_from_env(env: Mapping[str, str]) -> DiscoveryConfig:
+    """
+    Resolve the discovery range and static peers as rcl 9 does.
+
+    Unset or empty range means SUBNET; an unknown value means LOCALHOST with a warning; the
+    deprecated ``ROS_LOCALHOST_ONLY=1`` forces LOCALHOST (with a warning) and drops static peers.
+    """
+    warnings: list[str] = []
+    raw_range = env.get('ROS_AUTOMATIC_DISCOVERY_RANGE', '')
+    if not raw_range:
+        discovery_range = DiscoveryRange.SUBNET
+    else:
+        try:
+            discovery_range = DiscoveryRange(raw_range)
+        except ValueError:
+            warnings.append(
+                f'Invalid value {raw_range!r} for ROS_AUTOMATIC_DISCOVERY_RANGE, '
+                'using LOCALHOST (expected OFF, LOCALHOST, SUBNET or SYSTEM_DEFAULT)'
+            )
+            discovery_range = DiscoveryRange.LOCALHOST
+    peers = tuple(p.strip() for p in env.get('ROS_STATIC_PEERS', '').split(';') if p.strip())
+    if env.get('ROS_LOCALHOST_ONLY', '') == '1':
+        warnings.append(
+            'ROS_LOCALHOST_ONLY is deprecated but still honored if it is enabled. '
+            'Use ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS instead.'
+        )
+        discovery_range = DiscoveryRange.LOCALHOST
+        peers = ()
+    return DiscoveryConfig(discovery_range, peers, tuple(warnings))
+
+
+def _xml_escape(text: str) -> str:
+    return (
+        text.replace('&', '&amp;').replace('<', '&lt;').replace('>', '&gt;').replace('"', '&quot;')
+    )
+
+
+def cyclone_config(config: DiscoveryConfig, user_uri: str | None, pid: int) -> str | None:
+    """
+    Return the Cyclone configuration string for ``config``, or None for plain Cyclone defaults.
+
+    A user's ``CYCLONEDDS_URI`` is appended after our fragment, so it is respected and its
+    settings win where both set the same element (Cyclone merges comma-separated sources in
+    order), as rmw_cyclonedds does.
+    """
+    peers_xml = ''.join(f'<Peer address="{_xml_escape(p)}"/>' for p in config.static_peers)
+    fragment: str | None
+    if config.discovery_range is DiscoveryRange.LOCALHOST:
+        fragment = LOOPBACK_DISCOVERY_XML.format(extra_peers=peers_xml)
+    elif config.discovery_range is DiscoveryRange.OFF:
+        fragment = (
+            '<CycloneDDS><Domain id="any"><General><AllowMulticast>false</AllowMulticast>'
+            '</General><Discovery><ParticipantIndex>none</ParticipantIndex>'
+            f'<Tag>ros_discovery_off_{pid}</Tag></Discovery></Domain></CycloneDDS>'
+        )
+    elif config.discovery_range is DiscoveryRange.SUBNET and config.static_peers:
+        fragment = (
+            '<CycloneDDS><Domain id="any"><Discovery><ParticipantIndex>auto</ParticipantIndex>'
+            '<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex>'
+            f'<Peers>{peers_xml}</Peers></Discovery></Domain></CycloneDDS>'
+        )
+    else:
+        fragment = None
+    parts = [p for p in (fragment, user_uri) if p]
+    return ','.join(parts) if parts else None
+
+
+# --------------------------------------------------------------------------------------------
+# Names (pure)
+# --------------------------------------------------------------------------------------------
+
+_MSGTYPE_RE = re.compile(r'^([A-Za-z][A-Za-z0-9_]*)/(msg|srv|action)/([A-Za-z][A-Za-z0-9_]*)$')
+
+
+def dds_topic_name(fully_qualified_topic: str) -> str:
+    """Return the DDS topic of a fully qualified ROS topic: ``/tf`` -> ``rt/tf``."""
+    if not fully_qualified_topic.startswith('/'):
+        msg = f'topic {fully_qualified_topic!r} is not fully qualified (must start with "/")'
+        raise ValueError(msg)
+    return ROS_TOPIC_PREFIX + fully_qualified_topic
+
+
+def ros_topic_name(dds_topic: str) -> str | None:
+    """Return the ROS topic of a DDS topic (``rt/tf`` -> ``/tf``), None for non-ROS topics."""
+    if dds_topic.startswith(ROS_TOPIC_PREFIX + '/'):
+        return dds_topic[len(ROS_TOPIC_PREFIX) :]
+    return None
+
+
+def dds_type_name(ros_type: str) -> str:
+    """Return the DDS type name of ``pkg/msg/Name``: ``pkg::msg::dds_::Name_``."""
+    match = _MSGTYPE_RE.match(ros_type)
+    if match is None:
+        msg = f'{ros_type!r} is not a ROS interface type name like "tf2_msgs/msg/TFMessage"'
+        raise ValueError(msg)
+    package, kind, name = match.groups()
+    return f'{package}::{kind}::dds_::{name}_'
+
+
+# --------------------------------------------------------------------------------------------
+# QoS (pure)
+# --------------------------------------------------------------------------------------------
+
+
+class EndpointQos(NamedTuple):
+    """A ROS QoS profile resolved to what rmw_cyclonedds puts on a DDS endpoint."""
+
+    reliable: bool = True
+    transient_local: bool = False
+    keep_all: bool = False
+    depth: int = 10
+    deadline_ns: int | None = None
+    lifespan_ns: int | None = None
+    liveliness_manual_by_topic: bool = False
+    liveliness_lease_ns: int | None = None
+
+
+def _duration_ns(value: Any) -> int | None:
+    """Nanoseconds of a ROS duration (rclpy-like ``Duration``), None when unspecified (0)."""
+    if value is None:
+        return None
+    nanoseconds = getattr(value, 'nanoseconds', None)
+    if nanoseconds is None:
+        sec = getattr(value, 'sec', None)
+        if sec is None:
+            nanoseconds = int(value)
+        else:
+            nanoseconds = int(sec) * 1_000_000_000 + int(getattr(value, 'nanosec', 0))
+    nanoseconds = int(nanoseconds)
+    if nanoseconds == 0:
+        return None
+    if nanoseconds >= _RMW_DURATION_INFINITE_NS:
+        return DDS_INFINITY
+    return nanoseconds
+
+
+def _policy_name(value: Any) -> str:
+    name = getattr(value, 'name', None)
+    return str(name if name is not None else value).upper()
+
+
+def endpoint_qos_from_profile(profile: Any) -> EndpointQos:
+    """
+    Resolve an rclpy-like ``QoSProfile`` (policies with rclpy's enum names) as rmw_cyclonedds.
+
+    SYSTEM_DEFAULT reliability, durability and history become RELIABLE, VOLATILE and KEEP_LAST;
+    depth 0 becomes 1; zero durations mean "unspecified" (infinite).
+
+    :raises ValueError: for BEST_AVAILABLE or UNKNOWN policies, which this backend cannot
+        resolve, naming the policy.
+    """
+    reliability = _policy_name(profile.reliability)
+    durability = _policy_name(profile.durability)
+    history = _policy_name(profile.history)
+    liveliness = _policy_name(getattr(profile, 'liveliness', 'SYSTEM_DEFAULT'))
+    for policy, value in (
+        ('reliability', reliability),
+        ('durability', durability),
+        ('history', history),
+        ('liveliness', liveliness),
+    ):
+        if value in ('BEST_AVAILABLE', 'UNKNOWN'):
+            msg = f'QoS {policy} {value} is not supported by the DDS backend'
+            raise ValueError(msg)
+    depth = int(profile.depth)
+    if depth < 0:
+        msg = f'QoS depth must be >= 0, got {depth}'
+        raise ValueError(msg)
+    return EndpointQos(
+        reliable=reliability != 'BEST_EFFORT',
+        transient_local=durability == 'TRANSIENT_LOCAL',
+        keep_all=history == 'KEEP_ALL',
+        depth=max(depth, 1),
+        deadline_ns=_duration_ns(getattr(profile, 'deadline', None)),
+        lifespan_ns=_duration_ns(getattr(profile, 'lifespan', None)),
+        liveliness_manual_by_topic=liveliness == 'MANUAL_BY_TOPIC',
+        liveliness_lease_ns=_duration_ns(getattr(profile, 'liveliness_lease_duration', None)),
+    )
+
+
+def cyclone_qos(qos: EndpointQos, user_data: bytes, *, ignore_local: bool = False) -> Qos:
+    """
+    Build the Cyclone QoS of a reader or writer as rmw_cyclonedds' ``create_readwrite_qos``.
+
+    Reliability (infinite max blocking), durability with DURABILITY_SERVICE for
+    transient-local, history/depth, deadline, lifespan, liveliness, autodispose off, XCDR1 only,
+    and ``user_data`` (``typehash=RIHS01_...;``).
+    """
+    history = Policy.History.KeepAll if qos.keep_all else Policy.History.KeepLast(qos.depth)
+    policies: list[Any] = [
+        history,
+        Policy.Reliability.Reliable(DDS_INFINITY)
+        if qos.reliable
+        else Policy.Reliability.BestEffort,
+        Policy.WriterDataLifecycle(autodispose=False),
+        Policy.DataRepresentation(use_cdrv0_representation=True),
+        Policy.Userdata(user_data),
+    ]
+    if qos.transient_local:
+        policies.append(Policy.Durability.TransientLocal)
+        policies.append(
+            Policy.DurabilityService(
+                cleanup_delay=0,
+                history=history,
+                max_samples=-1,
+                max_instances=-1,
+                max_samples_per_instance=-1,
+            )
+        )
+    else:
+        policies.append(Policy.Durability.Volatile)
+    if qos.deadline_ns is not None:
+        policies.append(Policy.Deadline(qos.deadline_ns))
+    if qos.lifespan_ns is not None:
+        policies.append(Policy.Lifespan(qos.lifespan_ns))
+    lease = qos.liveliness_lease_ns if qos.liveliness_lease_ns is not None else DDS_INFINITY
+    if qos.liveliness_manual_by_topic:
+        policies.append(Policy.Liveliness.ManualByTopic(lease))
+    else:
+        policies.append(Policy.Liveliness.Automatic(lease))
+    if ignore_local:
+        policies.append(Policy.IgnoreLocal.Participant)
+    return Qos(*policies)
+
+
+_DDS_POLICY_TO_ROS = {
+    2: 'DURABILITY',
+    4: 'DEADLINE',
+    8: 'LIVELINESS',
+    11: 'RELIABILITY',
+    13: 'HISTORY',
+    21: 'LIFESPAN',
+}
+
+
+def incompatible_policy_name(dds_policy_id: int) -> str:
+    """Name of a DDS QoS policy id as rclpy prints it (``RELIABILITY``; others ``INVALID``)."""
+    return _DDS_POLICY_TO_ROS.get(dds_policy_id, 'INVALID')
+
+
+# --------------------------------------------------------------------------------------------
+# The participant (imperative shell)
+# --------------------------------------------------------------------------------------------
+
+_lib: Any = DDS._dll_handle
+_CQos: Any = _CycloneCQos
+Listener: Any = _CycloneListener
+
+
+class _Guid(ctypes.Structure):
+    _fields_ = [('v', ctypes.c_uint8 * 16)]
+
+
+class _PublicationMatched(ctypes.Structure):
+    _fields_ = [
+        ('total_count', ctypes.c_uint32),
+        ('total_count_change', ctypes.c_int32),
+        ('current_count', ctypes.c_uint32),
+        ('current_count_change', ctypes.c_int32),
+        ('last_handle', ctypes.c_uint64),
+    ]
+
+
+def _declare(name: str, restype: Any, *argtypes: Any) -> None:
+    function = getattr(_lib, name)
+    function.restype = restype
+    function.argtypes = list(argtypes)
+
+
+_entity = ctypes.c_int32
+_declare('dds_get_entity_sertype', ctypes.c_int32, _entity, ctypes.POINTER(ctypes.c_void_p))
+_declare('dds_create_writer', _entity, _entity, _entity, ctypes.c_void_p, ctypes.c_void_p)
+_declare('dds_create_reader', _entity, _entity, _entity, ctypes.c_void_p, ctypes.c_void_p)
+_declare('dds_delete', ctypes.c_int32, _entity)
+_declare('dds_get_guid', ctypes.c_int32, _entity, ctypes.POINTER(_Guid))
+_declare('dds_wait_for_acks', ctypes.c_int32, _entity, ctypes.c_int64)
+_declare('dds_create_waitset', _entity, _entity)
+_declare('dds_waitset_attach', ctypes.c_int32, _entity, _entity, ctypes.c_ssize_t)
+_declare('dds_waitset_detach', ctypes.c_int32, _entity, _entity)
+_declare(
+    'dds_waitset_wait',
+    ctypes.c_int32,
+    _entity,
+    ctypes.POINTER(ctypes.c_ssize_t),
+    ctypes.c_size_t,
+    ctypes.c_int64,
+)
+_declare('dds_create_readcondition', _entity, _entity, ctypes.c_uint32)
+_declare('dds_create_guardcondition', _entity, _entity)
+_declare('dds_set_guardcondition', ctypes.c_int32, _entity, ctypes.c_bool)
+_declare('dds_take_guardcondition', ctypes.c_int32, _entity, ctypes.POINTER(ctypes.c_bool))
+_declare(
+    'dds_get_publication_matched_status',
+    ctypes.c_int32,
+    _entity,
+    ctypes.POINTER(_PublicationMatched),
+)
+_declare(
+    'dds_get_subscription_matched_status',
+    ctypes.c_int32,
+    _entity,
+    ctypes.POINTER(_PublicationMatched),
+)
+
+_ANY_STATE = 0x7F
+_NOT_READ_ANY = 0x02 | 0x0C | 0x70
+_TAKE_BATCH = 256
+_placeholder_ids = itertools.count()
+
+
+def _check(result: int, what: str) -> int:
+    if result < 0:
+        msg = f'{what} failed (DDS return code {result})'
+        raise DdsWireError(msg)
+    return result
+
+
+def _entity_guid(handle: int) -> bytes:
+    guid = _Guid()
+    _check(_lib.dds_get_guid(handle, ctypes.byref(guid)), 'dds_get_guid')
+    return bytes(guid.v)
+
+
+def _placeholder_type(type_name: str) -> Any:
+    """Build a fresh one-octet IDL struct named ``type_name`` (its layout stays local)."""
+    placeholder: Any = make_idl_struct(
+        f'Placeholder{next(_placeholder_ids)}', type_name, {'opaque': idl_types.uint8}
+    )
+    placeholder.__idl__.populate()
+    placeholder.__idl__.fill_type_data()
+    return placeholder
+
+
+def _withdraw_type_information(topic: int, type_information: bytes) -> None:
+    """
+    Make the topic's sertype report no XTypes TypeInformation, like rmw_cyclonedds' sertype.
+
+    cyclonedds-python needs the type information once, to build the sertype's CDR stream
+    descriptor when the topic is created; afterwards it is only consulted to announce
+    endpoints. Its serialized copy is located by content inside the sertype and its length set
+    to zero, so readers and writers created later are announced without it.
+    """
+    sertype = ctypes.c_void_p()
+    _check(_lib.dds_get_entity_sertype(topic, ctypes.byref(sertype)), 'dds_get_entity_sertype')
+    base = sertype.value
+    if not base:
+        msg = 'topic has no sertype'
+        raise DdsWireError(msg)
+    pointer_size = ctypes.sizeof(ctypes.c_void_p)
+    for offset in range(0, 1024, pointer_size):
+        pointer = ctypes.c_void_p.from_address(base + offset).value
+        size = ctypes.c_uint32.from_address(base + offset + pointer_size)
+        if (
+            pointer
+            and size.value == len(type_information)
+            and ctypes.string_at(pointer, size.value) == type_information
+        ):
+            size.value = 0
+            return
+    msg = 'cannot find the type information in the cyclonedds-python sertype (version drift?)'
+    raise DdsWireError(msg)
+
+
+IncompatibleQosHandler = Callable[[str], None]
+
+
+class RawWriter:
+    """A DDS writer that publishes already serialized CDR payloads."""
+
+    def __init__(
+        self, participant: DdsParticipant, handle: int, listener: Listener | None
+    ) -> None:
+        self._participant = participant
+        self.handle = handle
+        self._listener = listener
+        self.guid = _entity_guid(handle)
+
+    def write(self, payload: bytes) -> None:
+        """Publish one CDR payload (with its 4-byte encapsulation header)."""
+        result = _clayer.ddspy_write(self.handle, payload)
+        if result < 0:
+            msg = f'dds_write failed (DDS return code {result})'
+            raise DdsWireError(msg)
+
+    def matched_count(self) -> int:
+        """Return the number of currently matched readers."""
+        status = _PublicationMatched()
+        _lib.dds_get_publication_matched_status(self.handle, ctypes.byref(status))
+        return int(status.current_count)
+
+    def wait_for_acks(self, timeout_ns: int) -> bool:
+        """Block until every matched reliable reader acknowledged all samples."""
+        return bool(_lib.dds_wait_for_acks(self.handle, timeout_ns) == 0)
+
+    def close(self, flush_timeout_ns: int = 0) -> None:
+        """Delete the writer, first waiting up to ``flush_timeout_ns`` for acknowledgements."""
+        if self.handle <= 0:
+            return
+        if flush_timeout_ns > 0:
+            self.wait_for_acks(flush_timeout_ns)
+        _lib.dds_delete(self.handle)
+        self._participant.forget(self.handle)
+        self.handle = 0
+
+
+class RawReader:
+    """A DDS reader that hands back received CDR payloads."""
+
+    def __init__(
+        self, participant: DdsParticipant, handle: int, listener: Listener | None
+    ) -> None:
+        self._participant = participant
+        self.handle = handle
+        self._listener = listener
+        self.guid = _entity_guid(handle)
+        self.read_condition = _check(
+            _lib.dds_create_readcondition(handle, _NOT_READ_ANY), 'dds_create_readcondition'
+        )
+
+    def take(self, max_samples: int = _TAKE_BATCH) -> list[bytes]:
+        """Take up to ``max_samples`` payloads (valid data only), oldest first."""
+        if self.handle <= 0:
+            return []
+        samples = _clayer.ddspy_take(self.handle, _ANY_STATE, max_samples)
+        if isinstance(samples, int):
+            if samples < 0:
+                msg = f'dds_take failed (DDS return code {samples})'
+                raise DdsWireError(msg)
+            return []
+        return [payload for payload, info in samples if info.valid_data]
+
+    def matched_count(self) -> int:
+        """Return the number of currently matched writers."""
+        status = _PublicationMatched()
+        _lib.dds_get_subscription_matched_status(self.handle, ctypes.byref(status))
+        return int(status.current_count)
+
+    def close(self) -> None:
+        """Delete the reader (and its read condition)."""
+        if self.handle <= 0:
+            return
+        _lib.dds_delete(self.handle)
+        self._participant.forget(self.handle)
+        self.handle = 0
+
+
+class WaitSet:
+    """A Cyclone waitset with a guard condition to wake it from another thread."""
+
+    def __init__(self, participant: DdsParticipant) -> None:
+        self._handle = _check(_lib.dds_create_waitset(participant.handle), 'dds_create_waitset')
+        self._guard = _check(
+            _lib.dds_create_guardcondition(participant.handle), 'dds_create_guardcondition'
+        )
+        _check(_lib.dds_waitset_attach(self._handle, self._guard, self._guard), 'attach')
+        self._attached: set[int] = set()
+        self._buffer = (ctypes.c_ssize_t * 64)()
+
+    def attach(self, condition: int) -> None:
+        """Wake on ``condition`` (a read condition handle)."""
+        if condition not in self._attached:
+            _check(_lib.dds_waitset_attach(self._handle, condition, condition), 'attach')
+            self._attached.add(condition)
+
+    def detach(self, condition: int) -> None:
+        """Stop waking on ``condition``."""
+        if condition in self._attached:
+            self._attached.discard(condition)
+            _lib.dds_waitset_detach(self._handle, condition)
+
+    def wake(self) -> None:
+        """Make a concurrent or the next :meth:`wait` return at once."""
+        _lib.dds_set_guardcondition(self._guard, True)
+
+    def wait(self, timeout_ns: int) -> list[int]:
+        """Block (without the GIL) until a condition triggers or the timeout; triggered ones."""
+        count = _lib.dds_waitset_wait(
+            self._handle, self._buffer, len(self._buffer), max(0, min(timeout_ns, DDS_INFINITY))
+        )
+        if count <= 0:
+            return []
+        triggered = [self._buffer[i] for i in range(min(count, len(self._buffer)))]
+        if self._guard in triggered:
+            flag = ctypes.c_bool()
+            _lib.dds_take_guardcondition(self._guard, ctypes.byref(flag))
+            triggered.remove(self._guard)
+        return triggered
+
+    def close(self) -> None:
+        """Delete the waitset and its guard condition."""
+        if self._handle > 0:
+            _lib.dds_delete(self._guard)
+            _lib.dds_delete(self._handle)
+            self._handle = 0
+
+
+class DdsParticipant:
+    """The process' DDS participant with ROS conventions: topics, raw endpoints, graph."""
+
+    def __init__(
+        self, env: Mapping[str, str] | None = None, warn: Callable[[str], None] = print
+    ) -> None:
+        environ = os.environ if env is None else env
+        self.domain_id = domain_id_from_env(environ)
+        self.discovery = discovery_config_from_env(environ)
+        for text in self.discovery.warnings:
+            warn(text)
+        config = cyclone_config(self.discovery, environ.get('CYCLONEDDS_URI'), os.getpid())
+        self._domain = Domain(self.domain_id, config) if config is not None else None
+        self._participant = DomainParticipant(
+            self.domain_id, qos=Qos(Policy.Userdata(b'enclave=/;'))
+        )
+        self.handle: int = self._participant._ref
+        self.guid = _entity_guid(self.handle)
+        self._lock = threading.Lock()
+        self._topics: dict[str, tuple[int, str]] = {}
+        self._listeners: dict[int, Listener] = {}
+        self._builtin_readers: dict[bool, tuple[Any, Any]] = {}
+        self._closed = False
+
+    def topic(self, dds_topic: str, type_name: str) -> int:
+        """Return the topic handle for ``dds_topic``, creating it for ``type_name`` once."""
+        with self._lock:
+            known = self._topics.get(dds_topic)
+            if known is not None:
+                if known[1] != type_name:
+                    msg = (
+                        f'topic {dds_topic!r} already exists in this process with type '
+                        f'{known[1]!r}, cannot use it with {type_name!r}'
+                    )
+                    raise DdsWireError(msg)
+                return known[0]
+            placeholder = _placeholder_type(type_name)
+            handle: int = _clayer.ddspy_topic_create(self.handle, dds_topic, placeholder, None, None)
+            _check(handle, f'creating DDS topic {dds_topic!r} of type {type_name!r}')
+            _withdraw_type_information(handle, placeholder.__idl__._xt_bytedata[0])
+            self._topics[dds_topic] = (handle, type_name)
+            return handle
+
+    def _endpoint_listener(
+        self, on_incompatible_qos: IncompatibleQosHandler | None, *, writer: bool
+    ) -> Listener | None:
+        if on_incompatible_qos is None:
+            return None
+        handler = on_incompatible_qos
+
+        def report(_entity: object, status: Any) -> None:
+            # Never let a failing log call escape into Cyclone's listener thread.
+            with contextlib.suppress(Exception):
+                handler(incompatible_policy_name(int(status.last_policy_id)))
+
+        if writer:
+            return Listener(on_offered_incompatible_qos=report)
+        return Listener(on_requested_incompatible_qos=report)
+
+    def create_writer(
+        self,
+        dds_topic: str,
+        type_name: str,
+        qos: EndpointQos,
+        user_data: bytes,
+        on_incompatible_qos: IncompatibleQosHandler | None = None,
+    ) -> RawWriter:
+        """Create a raw-bytes writer on ``dds_topic``."""
+        topic = self.topic(dds_topic, type_name)
+        listener = self._endpoint_listener(on_incompatible_qos, writer=True)
+        cqos = _CQos.qos_to_cqos(cyclone_qos(qos, user_data))
+        try:
+            handle = _lib.dds_create_writer(
+                self.handle,
+                topic,
+                cqos,
+                listener._ref if listener else None,
+            )
+        finally:
+            _CQos.cqos_destroy(cqos)
+        _check(handle, f'creating a DDS writer on {dds_topic!r}')
+        if listener is not None:
+            self._listeners[handle] = listener
+        return RawWriter(self, handle, listener)
+
+    def create_reader(
+        self,
+        dds_topic: str,
+        type_name: str,
+        qos: EndpointQos,
+        user_data: bytes,
+        on_incompatible_qos: IncompatibleQosHandler | None = None,
+        *,
+        ignore_local: bool = False,
+    ) -> RawReader:
+        """Create a raw-bytes reader on ``dds_topic``."""
+        topic = self.topic(dds_topic, type_name)
+        listener = self._endpoint_listener(on_incompatible_qos, writer=False)
+        cqos = _CQos.qos_to_cqos(cyclone_qos(qos, user_data, ignore_local=ignore_local))
+        try:
+            handle = _lib.dds_create_reader(
+                self.handle,
+                topic,
+                cqos,
+                listener._ref if listener else None,
+            )
+        finally:
+            _CQos.cqos_destroy(cqos)
+        _check(handle, f'creating a DDS reader on {dds_topic!r}')
+        if listener is not None:
+            self._listeners[handle] = listener
+        return RawReader(self, handle, listener)
+
+    def count_endpoints(self, dds_topic: str, *, publications: bool) -> int:
+        """Count the live writers (``publications``) or readers on ``dds_topic`` in the domain."""
+        with self._lock:
+            known = self._builtin_readers.get(publications)
+            if known is None:
+                builtin_topic = (
+                    BuiltinTopicDcpsPublication if publications else BuiltinTopicDcpsSubscription
+                )
+                reader = BuiltinDataReader(self._participant, builtin_topic)
+                alive = ReadCondition(
+                    reader, SampleState.Any | ViewState.Any | InstanceState.Alive
+                )
+                known = (reader, alive)
+                self._builtin_readers[publications] = known
+        reader, alive = known
+        samples = reader.read(N=100_000, condition=alive)
+        return int(sum(1 for sample in samples if sample.topic_name == dds_topic))
+
+    def forget(self, handle: int) -> None:
+        """Drop the bookkeeping of a deleted endpoint."""
+        self._listeners.pop(handle, None)
+
+    def close(self) -> None:
+        """Delete the participant and everything in it."""
+        if self._closed:
+            return
+        self._closed = True
+        _lib.dds_delete(self.handle)
+        if self._domain is not None:
+            _lib.dds_delete(self._domain._ref)
+
+
+_participant: DdsParticipant | None = None
+_participant_lock = threading.Lock()
+
+
+def get_participant(warn: Callable[[str], None] = print) -> DdsParticipant:
+    """Return the process' participant, creating it from the environment on first use."""
+    global _participant
+    with _participant_lock:
+        if _participant is None or _participant._closed:
+            _participant = DdsParticipant(warn=warn)
+        return _participant
+
+
+def close_participant() -> None:
+    """Delete the process' participant (a later :func:`get_participant` makes a new one)."""
+    global _participant
+    with _participant_lock:
+        if _participant is not None:
+            _participant.close()
+            _participant = None
