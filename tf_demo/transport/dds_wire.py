@@ -688,7 +688,9 @@ class DdsParticipant:
                     raise DdsWireError(msg)
                 return known[0]
             placeholder = _placeholder_type(type_name)
-            handle: int = _clayer.ddspy_topic_create(self.handle, dds_topic, placeholder, None, None)
+            handle: int = _clayer.ddspy_topic_create(
+                self.handle, dds_topic, placeholder, None, None
+            )
             _check(handle, f'creating DDS topic {dds_topic!r} of type {type_name!r}')
             _withdraw_type_information(handle, placeholder.__idl__._xt_bytedata[0])
             self._topics[dds_topic] = (handle, type_name)
