@@ -115,8 +115,18 @@ def _yaml_string(text: str) -> str:
 
 def _yaml_float(value: float) -> str:
     """Format a float that reads back bit-exactly (``repr``), with a point or exponent."""
-    text = repr(float(value))
-    return text if any(c in text for c in '.en') else text + '.0'
+    number = float(value)
+    if math.isnan(number):
+        return '.nan'
+    if math.isinf(number):
+        return '.inf' if number > 0 else '-.inf'
+    mantissa, _, exponent = repr(number).partition('e')
+    if '.' not in mantissa:
+        mantissa += '.0'
+    if not exponent:
+        return mantissa
+    sign = '' if exponent[0] in '+-' else '+'
+    return f'{mantissa}e{sign}{exponent}'
 
 
 def _yaml_stamp(stamp_ns: int) -> str:
@@ -400,8 +410,10 @@ def parse_snapshot(text: str, source: str = '<snapshot>') -> Snapshot:
         )
     cycle = find_cycle((e.parent, e.child) for e in entries)
     if cycle is not None:
-        line = child_line[cycle[0]]
-        raise SnapshotError(f'{source}:{line}: the parent links form a loop: {" -> ".join(cycle)}')
+        loop_line = child_line[cycle[0]]
+        raise SnapshotError(
+            f'{source}:{loop_line}: the parent links form a loop: {" -> ".join(cycle)}'
+        )
     return Snapshot(transforms=tuple(entries), recorded_at_ns=recorded_at, version=version)
 
 
