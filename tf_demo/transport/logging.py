@@ -1,0 +1,337 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Loggers with rclpy's API and rcutils' console output.
+
+A line is ``[LEVEL] [<sec>.<nsec, 9 digits>] [<logger name>]: <message>`` on stderr, the rcutils
+default; ``RCUTILS_CONSOLE_OUTPUT_FORMAT`` (``{severity}``, ``{name}``, ``{message}``,
+``{time}``, ``{time_as_nanoseconds}``, ``{date_time_with_ms}``, ``{function_name}``,
+``{file_name}``, ``{line_number}``) and ``RCUTILS_COLORIZED_OUTPUT`` are honoured, and
+``RCUTILS_LOGGING_USE_STDOUT=1`` sends the lines to stdout. Levels follow the logger hierarchy
+(``a.b`` inherits from ``a``, then from the default level set by ``--log-level``).
+
+In the rclpy world :func:`get_logger`, :class:`LoggingSeverity` and the level functions are
+rclpy's own.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from enum import IntEnum
+import os
+import sys
+import threading
+import time
+from typing import Any
+from typing import TextIO
+
+from tf_demo.transport.backend import backend_name
+
+__all__ = [
+    'DEFAULT_OUTPUT_FORMAT',
+    'Logger',
+    'LoggingSeverity',
+    'format_log_line',
+    'get_logger',
+    'get_logger_effective_level',
+    'get_logger_level',
+    'get_logging_severity_from_string',
+    'set_default_logger_level',
+    'set_logger_level',
+]
+
+DEFAULT_OUTPUT_FORMAT = '[{severity}] [{time}] [{name}]: {message}'
+
+
+class LoggingSeverity(IntEnum):
+    """Severity levels, with rcutils' values."""
+
+    UNSET = 0
+    DEBUG = 10
+    INFO = 20
+    WARN = 30
+    ERROR = 40
+    FATAL = 50
+
+
+_COLORS = {
+    LoggingSeverity.DEBUG: '\033[32m',
+    LoggingSeverity.INFO: '\033[0m',
+    LoggingSeverity.WARN: '\033[33m',
+    LoggingSeverity.ERROR: '\033[31m',
+    LoggingSeverity.FATAL: '\033[31m',
+}
+_COLOR_RESET = '\033[0m'
+
+
+def get_logging_severity_from_string(log_severity: str) -> LoggingSeverity:
+    """
+    Return the severity named ``log_severity`` (case-insensitive; ``warning`` means WARN).
+
+    :raises ValueError: for an unknown name, listing the valid ones.
+    """
+    key = log_severity.strip().upper()
+    if key == 'WARNING':
+        key = 'WARN'
+    try:
+        return LoggingSeverity[key]
+    except KeyError:
+        valid = ', '.join(level.name.lower() for level in LoggingSeverity)
+        msg = f"Unknown log severity '{log_severity}' (expected one of: {valid})"
+        raise ValueError(msg) from None
+
+
+def format_log_line(
+    severity: LoggingSeverity,
+    name: str,
+    message: str,
+    stamp_ns: int,
+    *,
+    output_format: str = DEFAULT_OUTPUT_FORMAT,
+    function_name: str = '',
+    file_name: str = '',
+    line_number: int = 0,
+) -> str:
+    """
+    Format one console line as rcutils does (without the trailing newline).
+
+    Unknown ``{tokens}`` are copied as they are, as rcutils does.
+    """
+    sec, nsec = divmod(stamp_ns, 1_000_000_000)
+    tokens: dict[str, Callable[[], str]] = {
+        'severity': lambda: severity.name,
+        'name': lambda: name,
+        'message': lambda: message,
+        'time': lambda: f'{sec}.{nsec:09d}',
+        'time_as_nanoseconds': lambda: str(stamp_ns),
+        'date_time_with_ms': lambda: (
+            time.strftime('%Y-%m-%d %H:%M:%S', time.localtime(sec)) + f'.{nsec // 1_000_000:03d}'
+        ),
+        'function_name': lambda: function_name,
+        'file_name': lambda: file_name,
+        'line_number': lambda: str(line_number),
+    }
+    pieces: list[str] = []
+    index = 0
+    while index < len(output_format):
+        start = output_format.find('{', index)
+        if start < 0:
+            pieces.append(output_format[index:])
+            break
+        end = output_format.find('}', start)
+        if end < 0:
+            pieces.append(output_format[index:])
+            break
+        pieces.append(output_format[index:start])
+        token = output_format[start + 1 : end]
+        producer = tokens.get(token)
+        pieces.append(producer() if producer else output_format[start : end + 1])
+        index = end + 1
+    return ''.join(pieces)
+
+
+class _LoggingState:
+    """Process-wide logger levels and output settings (rcutils keeps these globally too)."""
+
+    def __init__(self) -> None:
+        self.lock = threading.Lock()
+        self.default_level = LoggingSeverity.INFO
+        self.levels: dict[str, LoggingSeverity] = {}
+        # once / skip_first / throttle state per (logger, file, line), as rclpy keys it.
+        self.call_sites: dict[tuple[str, str, int], list[Any]] = {}
+
+    def effective_level(self, name: str) -> LoggingSeverity:
+        candidate = name
+        while candidate:
+            level = self.levels.get(candidate)
+            if level is not None and level is not LoggingSeverity.UNSET:
+                return level
+            candidate = candidate.rpartition('.')[0]
+        return self.default_level
+
+
+_STATE = _LoggingState()
+
+
+def _stream() -> TextIO:
+    use_stdout = os.environ.get('RCUTILS_LOGGING_USE_STDOUT', '0') == '1'
+    return sys.stdout if use_stdout else sys.stderr
+
+
+def _colorize(stream: TextIO) -> bool:
+    setting = os.environ.get('RCUTILS_COLORIZED_OUTPUT')
+    if setting == '1':
+        return True
+    if setting == '0':
+        return False
+    isatty = getattr(stream, 'isatty', None)
+    return bool(isatty and isatty())
+
+
+def set_default_logger_level(level: LoggingSeverity | int) -> None:
+    """Set the level of loggers that have none of their own (``--log-level <level>``)."""
+    _STATE.default_level = LoggingSeverity(level)
+
+
+def set_logger_level(name: str, level: LoggingSeverity | int) -> None:
+    """Set the level of logger ``name`` (``--log-level name:=level``)."""
+    with _STATE.lock:
+        _STATE.levels[name] = LoggingSeverity(level)
+
+
+def get_logger_level(name: str) -> LoggingSeverity:
+    """Return the level set on logger ``name`` (UNSET when none)."""
+    return _STATE.levels.get(name, LoggingSeverity.UNSET)
+
+
+def get_logger_effective_level(name: str) -> LoggingSeverity:
+    """Return the level that applies to logger ``name``."""
+    return _STATE.effective_level(name)
+
+
+_SUPPORTED_OPTIONS = frozenset(
+    {'once', 'throttle_duration_sec', 'throttle_time_source_type', 'skip_first'}
+)
+
+
+class Logger:
+    """A named logger with rclpy's ``RcutilsLogger`` methods."""
+
+    def __init__(self, name: str = '') -> None:
+        self.name = name
+
+    def get_child(self, name: str) -> Logger:
+        """Return the logger ``<this name>.<name>``."""
+        if not name:
+            msg = 'Child logger name must not be empty.'
+            raise ValueError(msg)
+        return Logger(f'{self.name}.{name}' if self.name else name)
+
+    def set_level(self, level: LoggingSeverity | int) -> None:
+        """Set this logger's own level."""
+        set_logger_level(self.name, level)
+
+    def get_effective_level(self) -> LoggingSeverity:
+        """Return the level that applies to this logger."""
+        return get_logger_effective_level(self.name)
+
+    def is_enabled_for(self, severity: LoggingSeverity | int) -> bool:
+        """Whether a message of ``severity`` would be printed."""
+        return LoggingSeverity(severity) >= self.get_effective_level()
+
+    def _passes_filters(self, call_site: tuple[str, str, int], options: dict[str, Any]) -> bool:
+        unknown = set(options) - _SUPPORTED_OPTIONS
+        if unknown:
+            name = sorted(unknown)[0]
+            supported = ', '.join(sorted(_SUPPORTED_OPTIONS))
+            msg = f'parameter "{name}" is not one of the recognized logging options "{supported}"'
+            raise TypeError(msg)
+        if not options:
+            return True
+        with _STATE.lock:
+            state = _STATE.call_sites.setdefault(call_site, [False, 0, None])
+            if options.get('once'):
+                if state[0]:
+                    return False
+                state[0] = True
+                return True
+            if options.get('skip_first') and state[1] == 0:
+                state[1] += 1
+                return False
+            state[1] += 1
+            throttle = options.get('throttle_duration_sec')
+            if throttle is not None:
+                now_ns = time.monotonic_ns()
+                last_ns = state[2]
+                if last_ns is not None and now_ns - last_ns < float(throttle) * 1e9:
+                    return False
+                state[2] = now_ns
+            return True
+
+    def log(self, message: Any, severity: LoggingSeverity | int, **kwargs: Any) -> bool:
+        """
+        Print ``message`` at ``severity`` if enabled and the filters let it through.
+
+        :param kwargs: ``once=True``, ``throttle_duration_sec=<float>``, ``skip_first=True``.
+        :return: whether the message was printed.
+        """
+        severity = LoggingSeverity(severity)
+        frame = sys._getframe(1)
+        while frame.f_back is not None and frame.f_code.co_filename == __file__:
+            frame = frame.f_back
+        call_site = (self.name, frame.f_code.co_filename, frame.f_lineno)
+        if not self._passes_filters(call_site, kwargs):
+            return False
+        if not self.is_enabled_for(severity):
+            return False
+        stream = _stream()
+        line = format_log_line(
+            severity,
+            self.name,
+            str(message),
+            time.time_ns(),
+            output_format=os.environ.get('RCUTILS_CONSOLE_OUTPUT_FORMAT') or DEFAULT_OUTPUT_FORMAT,
+            function_name=frame.f_code.co_name,
+            file_name=frame.f_code.co_filename,
+            line_number=frame.f_lineno,
+        )
+        if _colorize(stream):
+            line = f'{_COLORS[severity]}{line}{_COLOR_RESET}'
+        with _STATE.lock:
+            try:
+                stream.write(line + '\n')
+                stream.flush()
+            except (OSError, ValueError):
+                return False  # a closed stream must not crash the node
+        return True
+
+    def debug(self, message: Any, **kwargs: Any) -> bool:
+        """Log at DEBUG."""
+        return self.log(message, LoggingSeverity.DEBUG, **kwargs)
+
+    def info(self, message: Any, **kwargs: Any) -> bool:
+        """Log at INFO."""
+        return self.log(message, LoggingSeverity.INFO, **kwargs)
+
+    def warning(self, message: Any, **kwargs: Any) -> bool:
+        """Log at WARN."""
+        return self.log(message, LoggingSeverity.WARN, **kwargs)
+
+    warn = warning
+
+    def error(self, message: Any, **kwargs: Any) -> bool:
+        """Log at ERROR."""
+        return self.log(message, LoggingSeverity.ERROR, **kwargs)
+
+    def fatal(self, message: Any, **kwargs: Any) -> bool:
+        """Log at FATAL."""
+        return self.log(message, LoggingSeverity.FATAL, **kwargs)
+
+    def __repr__(self) -> str:
+        return f'Logger(name={self.name!r})'
+
+
+def get_logger(name: str) -> Logger:
+    """Return the logger called ``name`` (as ``rclpy.logging.get_logger``)."""
+    if not name:
+        msg = 'Logger name must not be empty.'
+        raise ValueError(msg)
+    return Logger(name)
+
+
+if backend_name() == 'rclpy':  # pragma: no cover - needs a ROS 2 installation
+    from tf_demo.transport import rclpy_backend as _rclpy_backend
+
+    globals().update(_rclpy_backend.logging_exports())

@@ -1,0 +1,534 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Node parameters with rclpy's classes, rules and error texts.
+
+:class:`Parameter`, :class:`SetParametersResult`, :class:`ParameterDescriptor` and the
+exceptions match ``rclpy.parameter``, ``rcl_interfaces.msg`` and ``rclpy.exceptions``.
+:class:`ParameterStore` is the parameter half of a standalone node: ``declare_parameter`` takes
+overrides from ``--ros-args`` (``-p``, ``--params-file``) and from the node's constructor, values
+are statically typed unless the descriptor says ``dynamic_typing``, and on-set callbacks may
+reject a change with a reason. In the rclpy world ``Parameter``, ``SetParametersResult``,
+``ParameterDescriptor`` and the exceptions are rclpy's own.
+"""
+
+from __future__ import annotations
+
+import array
+from collections.abc import Callable
+from collections.abc import Iterable
+from collections.abc import Mapping
+from collections.abc import Sequence
+from dataclasses import dataclass
+from enum import Enum
+import threading
+from typing import Any
+
+from tf_demo.transport.backend import backend_name
+
+__all__ = [
+    'InvalidParameterException',
+    'InvalidParameterTypeException',
+    'InvalidParameterValueException',
+    'Parameter',
+    'ParameterAlreadyDeclaredException',
+    'ParameterDescriptor',
+    'ParameterException',
+    'ParameterImmutableException',
+    'ParameterNotDeclaredException',
+    'ParameterStore',
+    'ParameterType',
+    'ParameterUninitializedException',
+    'SetParametersResult',
+]
+
+
+class ParameterType(Enum):
+    """The type of a parameter value (``rcl_interfaces/msg/ParameterType`` values)."""
+
+    NOT_SET = 0
+    BOOL = 1
+    INTEGER = 2
+    DOUBLE = 3
+    STRING = 4
+    BYTE_ARRAY = 5
+    BOOL_ARRAY = 6
+    INTEGER_ARRAY = 7
+    DOUBLE_ARRAY = 8
+    STRING_ARRAY = 9
+
+    def __str__(self) -> str:
+        return f'Type.{self.name}'
+
+    @classmethod
+    def from_parameter_value(cls, parameter_value: Any) -> ParameterType:
+        """
+        Return the type rclpy infers for ``parameter_value``.
+
+        :raises TypeError: for a value no parameter can hold.
+        """
+        if parameter_value is None:
+            return cls.NOT_SET
+        if isinstance(parameter_value, bool):
+            return cls.BOOL
+        if isinstance(parameter_value, int):
+            return cls.INTEGER
+        if isinstance(parameter_value, float):
+            return cls.DOUBLE
+        if isinstance(parameter_value, str):
+            return cls.STRING
+        if isinstance(parameter_value, (list, tuple, array.array)):
+            for element_type, array_type in _ARRAY_TYPES:
+                if all(isinstance(item, element_type) for item in parameter_value):
+                    return array_type
+            msg = f"The given value is not a list of one of the allowed types '{parameter_value}'."
+            raise TypeError(msg)
+        msg = f"The given value is not one of the allowed types '{parameter_value}'."
+        raise TypeError(msg)
+
+    def check(self, parameter_value: Any) -> bool:
+        """Whether ``parameter_value`` can be held by a parameter of this type (rclpy's rule)."""
+        if self is ParameterType.NOT_SET:
+            return parameter_value is None
+        scalar = _SCALAR_TYPES.get(self)
+        if scalar is not None:
+            if scalar is int and isinstance(parameter_value, bool):
+                return False
+            return isinstance(parameter_value, scalar)
+        element = _ARRAY_ELEMENT_TYPES[self]
+        if not isinstance(parameter_value, (list, tuple, array.array)):
+            return False
+        if element is int:
+            return all(
+                isinstance(item, int) and not isinstance(item, bool) for item in parameter_value
+            )
+        return all(isinstance(item, element) for item in parameter_value)
+
+
+_ARRAY_TYPES: tuple[tuple[type, ParameterType], ...] = (
+    (bytes, ParameterType.BYTE_ARRAY),
+    (bool, ParameterType.BOOL_ARRAY),
+    (int, ParameterType.INTEGER_ARRAY),
+    (float, ParameterType.DOUBLE_ARRAY),
+    (str, ParameterType.STRING_ARRAY),
+)
+_ARRAY_ELEMENT_TYPES = {array_type: element for element, array_type in _ARRAY_TYPES}
+_SCALAR_TYPES: dict[ParameterType, type] = {
+    ParameterType.BOOL: bool,
+    ParameterType.INTEGER: int,
+    ParameterType.DOUBLE: float,
+    ParameterType.STRING: str,
+}
+
+
+class Parameter:
+    """A named, typed parameter value (``rclpy.parameter.Parameter``)."""
+
+    Type = ParameterType
+
+    __slots__ = ('_name', '_type', '_value')
+
+    def __init__(self, name: str, type_: ParameterType | None = None, value: Any = None) -> None:
+        if type_ is None:
+            type_ = ParameterType.from_parameter_value(value)
+        if not isinstance(type_, ParameterType):
+            msg = f"type must be an instance of '{ParameterType!r}'"
+            raise TypeError(msg)
+        if not type_.check(value):
+            msg = f"Type '{type_}' and value '{value}' do not agree"
+            raise ValueError(msg)
+        self._name = name
+        self._type = type_
+        self._value = value
+
+    @property
+    def name(self) -> str:
+        """The parameter's name (dots separate namespaces)."""
+        return self._name
+
+    @property
+    def type_(self) -> ParameterType:
+        """The parameter's type."""
+        return self._type
+
+    @property
+    def value(self) -> Any:
+        """The parameter's value (``None`` when NOT_SET)."""
+        return self._value
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Parameter):
+            return NotImplemented
+        return (self._name, self._type, self._value) == (other._name, other._type, other._value)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f'Parameter(name={self._name!r}, type_={self._type}, value={self._value!r})'
+
+
+@dataclass
+class SetParametersResult:
+    """Outcome of setting parameters (``rcl_interfaces/msg/SetParametersResult``)."""
+
+    successful: bool = False
+    reason: str = ''
+
+
+@dataclass
+class ParameterDescriptor:
+    """Description and constraints of a parameter (``rcl_interfaces/msg/ParameterDescriptor``)."""
+
+    name: str = ''
+    type: int = 0
+    description: str = ''
+    additional_constraints: str = ''
+    read_only: bool = False
+    dynamic_typing: bool = False
+
+
+class ParameterException(Exception):  # noqa: N818 - rclpy's name
+    """Base of the parameter errors; the text ends with the parameter name(s), as in rclpy."""
+
+    def __init__(self, error_msg: str, parameters: str | list[str]) -> None:
+        super().__init__(f'{error_msg}: {parameters}')
+
+
+class ParameterNotDeclaredException(ParameterException):
+    """A parameter was used without being declared."""
+
+    def __init__(self, parameters: str | list[str]) -> None:
+        super().__init__('Invalid access to undeclared parameter(s)', parameters)
+
+
+class ParameterAlreadyDeclaredException(ParameterException):
+    """A parameter was declared twice."""
+
+    def __init__(self, parameters: str | list[str]) -> None:
+        super().__init__('Parameter(s) already declared', parameters)
+
+
+class InvalidParameterException(ParameterException):
+    """A parameter name is not valid."""
+
+    def __init__(self, parameter_name: str) -> None:
+        super().__init__('Invalid parameter name', parameter_name)
+
+
+class InvalidParameterTypeException(ParameterException):
+    """A value of the wrong type was given to a statically typed parameter."""
+
+    def __init__(self, desired_parameter: Parameter, expected_type: str) -> None:
+        try:
+            given = ParameterType.from_parameter_value(desired_parameter.value).name
+        except TypeError:
+            given = type(desired_parameter.value).__name__
+        super().__init__(
+            f"Trying to set parameter '{desired_parameter.name}' to "
+            f"'{desired_parameter.value}' of type '{given}', expecting type '{expected_type}'",
+            desired_parameter.name,
+        )
+
+
+class InvalidParameterValueException(ParameterException):
+    """A value was rejected by an on-set callback or by the descriptor."""
+
+    def __init__(self, parameter: str, value: Any, reason: str) -> None:
+        super().__init__(
+            f'Invalid parameter value ({value}) for parameter. Reason: {reason}', parameter
+        )
+
+
+class ParameterImmutableException(ParameterException):
+    """A read-only parameter was modified."""
+
+    def __init__(self, parameter_name: str) -> None:
+        super().__init__('Attempted to modify read-only parameter', parameter_name)
+
+
+class ParameterUninitializedException(ParameterException):
+    """A statically typed parameter declared without a value was read."""
+
+    def __init__(self, parameter_name: str) -> None:
+        super().__init__(f"The parameter '{parameter_name}' is not initialized", parameter_name)
+
+
+OnSetCallback = Callable[[list[Parameter]], SetParametersResult]
+_WRONG_TYPE_PREFIX = 'Wrong parameter type'
+
+
+class ParameterStore:
+    """
+    The declared parameters of one node, with rclpy's declare/get/set semantics.
+
+    :param overrides: values that replace declared defaults, in precedence order already
+        resolved (``--params-file`` and ``-p`` for this node, then the constructor's
+        ``parameter_overrides``); see :func:`tf_demo.transport.ros_args.parameter_overrides`.
+    :param allow_undeclared_parameters: as the rclpy Node argument of that name.
+    :param automatically_declare_parameters_from_overrides: as the rclpy Node argument.
+    """
+
+    def __init__(
+        self,
+        overrides: Mapping[str, Parameter] | None = None,
+        *,
+        allow_undeclared_parameters: bool = False,
+        automatically_declare_parameters_from_overrides: bool = False,
+    ) -> None:
+        self._lock = threading.RLock()
+        self._overrides: dict[str, Parameter] = dict(overrides or {})
+        self._parameters: dict[str, Parameter] = {}
+        self._descriptors: dict[str, ParameterDescriptor] = {}
+        self._on_set_callbacks: list[OnSetCallback] = []
+        self._allow_undeclared = allow_undeclared_parameters
+        if automatically_declare_parameters_from_overrides:
+            for name, parameter in self._overrides.items():
+                self.declare_parameter(name, parameter.value)
+
+    @property
+    def overrides(self) -> dict[str, Parameter]:
+        """A copy of the overrides this store was built with."""
+        return dict(self._overrides)
+
+    def declare_parameter(
+        self,
+        name: str,
+        value: Any = None,
+        descriptor: ParameterDescriptor | None = None,
+        ignore_override: bool = False,
+    ) -> Parameter:
+        """
+        Declare one parameter and return it, with the override applied unless ignored.
+
+        ``value`` may be a :class:`Parameter.Type` to declare a typed parameter without a
+        default (reading it before it is set raises ParameterUninitializedException).
+
+        :raises ParameterAlreadyDeclaredException: when ``name`` is already declared.
+        :raises InvalidParameterTypeException: when the override has another type.
+        :raises InvalidParameterValueException: when an on-set callback rejects the value.
+        """
+        return self.declare_parameters('', [(name, value, descriptor)], ignore_override)[0]
+
+    def declare_parameters(
+        self,
+        namespace: str,
+        parameters: Sequence[tuple[Any, ...]],
+        ignore_override: bool = False,
+    ) -> list[Parameter]:
+        """Declare several parameters: tuples of ``(name[, value[, descriptor]])``."""
+        declared: list[tuple[Parameter, ParameterDescriptor]] = []
+        for entry in parameters:
+            if not isinstance(entry, tuple) or not 1 <= len(entry) <= 3:
+                msg = 'Invalid parameter tuple: expected (name[, value[, descriptor]])'
+                raise TypeError(msg)
+            name = entry[0]
+            value = entry[1] if len(entry) > 1 else None
+            descriptor = entry[2] if len(entry) > 2 and entry[2] is not None else None
+            if not isinstance(name, str):
+                msg = 'First element {name} at index {index} in parameters list is not a str.'
+                raise TypeError(msg.format(name=name, index=len(declared)))
+            full_name = f'{namespace}.{name}' if namespace else name
+            if not full_name:
+                raise InvalidParameterException(full_name)
+            descriptor = ParameterDescriptor(**vars(descriptor)) if descriptor else None
+            descriptor = descriptor or ParameterDescriptor()
+            descriptor.name = full_name
+            if isinstance(value, ParameterType):
+                descriptor.type = value.value
+                value = None
+            elif descriptor.type == ParameterType.NOT_SET.value:
+                descriptor.type = ParameterType.from_parameter_value(value).value
+            if not ignore_override and full_name in self._overrides:
+                value = self._overrides[full_name].value
+            declared.append((Parameter(full_name, value=value), descriptor))
+        with self._lock:
+            already = [p.name for p, _ in declared if p.name in self._parameters]
+            if already:
+                raise ParameterAlreadyDeclaredException(already)
+            for parameter, descriptor in declared:
+                result = self._apply([parameter], {parameter.name: descriptor}, declaring=True)
+                if not result.successful:
+                    if result.reason.startswith(_WRONG_TYPE_PREFIX):
+                        expected = ParameterType(descriptor.type).name
+                        raise InvalidParameterTypeException(parameter, expected)
+                    raise InvalidParameterValueException(
+                        parameter.name, parameter.value, result.reason
+                    )
+        return [parameter for parameter, _ in declared]
+
+    def undeclare_parameter(self, name: str) -> None:
+        """Remove a declared parameter; read-only parameters cannot be removed."""
+        with self._lock:
+            if name not in self._parameters:
+                raise ParameterNotDeclaredException(name)
+            if self._descriptors[name].read_only:
+                raise ParameterImmutableException(name)
+            del self._parameters[name]
+            del self._descriptors[name]
+
+    def has_parameter(self, name: str) -> bool:
+        """Whether ``name`` is declared."""
+        return name in self._parameters
+
+    def get_parameter(self, name: str) -> Parameter:
+        """
+        Return the declared parameter ``name``.
+
+        :raises ParameterNotDeclaredException: when it is not declared (and undeclared
+            parameters are not allowed).
+        :raises ParameterUninitializedException: for a typed parameter without a value yet.
+        """
+        with self._lock:
+            parameter = self._parameters.get(name)
+            if parameter is None:
+                if self._allow_undeclared:
+                    return Parameter(name, ParameterType.NOT_SET, None)
+                raise ParameterNotDeclaredException(name)
+            descriptor = self._descriptors[name]
+            if (
+                parameter.type_ is ParameterType.NOT_SET
+                and descriptor.type != ParameterType.NOT_SET.value
+                and not descriptor.dynamic_typing
+            ):
+                raise ParameterUninitializedException(name)
+            return parameter
+
+    def get_parameters(self, names: Iterable[str]) -> list[Parameter]:
+        """Return the parameters named in ``names`` (see :meth:`get_parameter`)."""
+        return [self.get_parameter(name) for name in names]
+
+    def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter:
+        """Return the declared parameter ``name``, else ``alternative_value``."""
+        if alternative_value is None:
+            alternative_value = Parameter(name, ParameterType.NOT_SET)
+        return self._parameters.get(name, alternative_value)
+
+    def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
+        """Return the parameters under ``prefix.`` keyed by the rest of their names."""
+        start = f'{prefix}.' if prefix else ''
+        return {
+            name[len(start) :]: parameter
+            for name, parameter in self._parameters.items()
+            if name.startswith(start)
+        }
+
+    def describe_parameter(self, name: str) -> ParameterDescriptor:
+        """Return the descriptor of a declared parameter."""
+        with self._lock:
+            if name not in self._descriptors:
+                raise ParameterNotDeclaredException(name)
+            return self._descriptors[name]
+
+    def names(self) -> list[str]:
+        """Return the declared parameter names, sorted."""
+        return sorted(self._parameters)
+
+    def set_parameters(self, parameter_list: Sequence[Parameter]) -> list[SetParametersResult]:
+        """
+        Set parameters one by one; each gets its own result (a rejection is not an error).
+
+        :raises ParameterNotDeclaredException: when one of them is not declared.
+        """
+        self._check_declared(parameter_list)
+        return [self._apply([parameter], None, declaring=False) for parameter in parameter_list]
+
+    def set_parameters_atomically(
+        self, parameter_list: Sequence[Parameter]
+    ) -> SetParametersResult:
+        """Set all parameters or none of them."""
+        self._check_declared(parameter_list)
+        return self._apply(list(parameter_list), None, declaring=False)
+
+    def _check_declared(self, parameter_list: Sequence[Parameter]) -> None:
+        if self._allow_undeclared:
+            return
+        undeclared = [p.name for p in parameter_list if p.name not in self._parameters]
+        if undeclared:
+            raise ParameterNotDeclaredException(undeclared)
+
+    def add_on_set_parameters_callback(self, callback: OnSetCallback) -> None:
+        """Add a validation callback; the newest one runs first, as in rclpy."""
+        with self._lock:
+            self._on_set_callbacks.insert(0, callback)
+
+    def remove_on_set_parameters_callback(self, callback: OnSetCallback) -> None:
+        """Remove a callback added with :meth:`add_on_set_parameters_callback`."""
+        with self._lock:
+            self._on_set_callbacks.remove(callback)
+
+    def _apply(
+        self,
+        parameter_list: list[Parameter],
+        descriptors: dict[str, ParameterDescriptor] | None,
+        *,
+        declaring: bool,
+    ) -> SetParametersResult:
+        with self._lock:
+            known = descriptors if descriptors is not None else self._descriptors
+            checked: list[Parameter] = []
+            for parameter in parameter_list:
+                descriptor = known.get(parameter.name) or ParameterDescriptor(
+                    name=parameter.name, dynamic_typing=True
+                )
+                result = _check_descriptor(parameter, descriptor, declaring=declaring)
+                if not result.successful:
+                    return result
+                checked.append(parameter)
+            result = SetParametersResult(successful=True)
+            for callback in list(self._on_set_callbacks):
+                result = callback(list(checked))
+                if not isinstance(result, SetParametersResult) and not hasattr(
+                    result, 'successful'
+                ):
+                    msg = 'on-set parameters callback must return a SetParametersResult'
+                    raise TypeError(msg)
+                if not result.successful:
+                    return result
+            for parameter in checked:
+                self._parameters[parameter.name] = parameter
+                if descriptors is not None:
+                    self._descriptors[parameter.name] = descriptors[parameter.name]
+                elif parameter.name not in self._descriptors:
+                    self._descriptors[parameter.name] = ParameterDescriptor(
+                        name=parameter.name, dynamic_typing=True
+                    )
+                elif self._descriptors[parameter.name].type == ParameterType.NOT_SET.value:
+                    self._descriptors[parameter.name].type = parameter.type_.value
+            return result
+
+
+def _check_descriptor(
+    parameter: Parameter, descriptor: ParameterDescriptor, *, declaring: bool
+) -> SetParametersResult:
+    """Check a new value against its descriptor (read-only, static type)."""
+    if descriptor.read_only and not declaring:
+        reason = f'Trying to set a read-only parameter: {parameter.name}.'
+        return SetParametersResult(successful=False, reason=reason)
+    expected = ParameterType(descriptor.type)
+    if (
+        descriptor.dynamic_typing
+        or expected is ParameterType.NOT_SET
+        or (parameter.type_ is ParameterType.NOT_SET and declaring)
+        or parameter.type_ is expected
+    ):
+        return SetParametersResult(successful=True)
+    reason = f"Wrong parameter type, expected '{expected}' got '{parameter.type_}'"
+    return SetParametersResult(successful=False, reason=reason)
+
+
+if backend_name() == 'rclpy':  # pragma: no cover - needs a ROS 2 installation
+    from tf_demo.transport import rclpy_backend as _rclpy_backend
+
+    globals().update(_rclpy_backend.parameter_exports())
