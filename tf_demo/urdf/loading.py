@@ -51,7 +51,7 @@ PACKAGE_PATH_VARIABLE = 'TF_DEMO_PACKAGE_PATH'
 _XACRO_LOCK = threading.Lock()
 
 
-class PackageNotFoundError(KeyError):
+class PackageNotFoundError(LookupError):
     """A ``$(find pkg)`` or ``package://pkg`` names a package found nowhere on the search path."""
 
 
@@ -162,13 +162,20 @@ def expand_xacro(
         with _patched_xacro(package_paths):
             document = xacro.process_file(source, mappings=arguments)
     except PackageNotFoundError as error:
-        raise UrdfBrokenRefError(source, 'xacro', str(error.args[0])) from None
+        raise UrdfBrokenRefError(source, 'xacro', str(error)) from None
     except ExpatError as error:
         raise UrdfMalformedError(
             source, 'XML', f'malformed XML: {error}', getattr(error, 'lineno', None)
         ) from None
     except (xacro.XacroException, OSError, KeyError, ValueError, NameError) as error:
         reason = str(error) or type(error).__name__
+        cause = getattr(error, 'exc', None)
+        if isinstance(cause, PackageNotFoundError):
+            raise UrdfBrokenRefError(source, 'xacro', str(cause)) from None
+        if isinstance(cause, OSError) and cause.filename:
+            raise UrdfBrokenRefError(
+                source, 'xacro', f'{cause.strerror}: {cause.filename}'
+            ) from None
         if isinstance(error, OSError) and error.filename:
             raise UrdfBrokenRefError(
                 source, 'xacro', f'{error.strerror}: {error.filename}'
