@@ -1,0 +1,216 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Tests of tf_doctor's pure analysis: each fault in hand-made observations gives its finding."""
+
+import json
+
+from tf_demo.cli._doctor import diagnose
+from tf_demo.cli._doctor import exit_code
+from tf_demo.cli._doctor import format_report
+from tf_demo.cli._doctor import format_report_json
+from tf_demo.cli._doctor import Observation
+from tf_demo.cli._doctor import observations_from_snapshot
+from tf_demo.cli._doctor import ObservedTransform
+from tf_demo.cli._doctor import summarize
+from tf_demo.cli._doctor import TF_STATIC_TOPIC
+from tf_demo.cli._doctor import TF_TOPIC
+from tf_demo.cli._snapshot import parse_snapshot
+
+S = 1_000_000_000
+T0 = 1_700_000_000 * S
+
+
+def static(parent, child, t=(0.0, 0.0, 0.0), publisher=''):
+    return Observation(TF_STATIC_TOPIC, T0, (ObservedTransform(parent, child, T0, t),), publisher)
+
+
+def stream(parent, child, *, rate_hz=20.0, seconds=2.0, delay_ns=1_000_000, values=None, pub=''):
+    count = int(rate_hz * seconds)
+    result = []
+    for i in range(count):
+        stamp = T0 + int(i * S / rate_hz)
+        t = values[i % len(values)] if values else (i * 0.01, 0.0, 0.0)
+        transform = ObservedTransform(parent, child, stamp, t)
+        result.append(Observation(TF_TOPIC, stamp + delay_ns, (transform,), pub))
+    return result
+
+
+def healthy():
+    return [
+        static('map', 'odom'),
+        *stream('odom', 'base_link'),
+        static('base_link', 'laser'),
+        static('base_link', 'camera'),
+    ]
+
+
+def kinds(findings):
+    return sorted(f.kind for f in findings)
+
+
+def test_healthy_tree_has_no_findings():
+    """A REP-105 tree with steady data is healthy and exits 0."""
+    findings = diagnose(healthy(), listen_ns=2 * S, frames=['map', 'laser'])
+    assert findings == []
+    assert exit_code(findings) == 0
+    report = format_report(findings, summarize(healthy()), 'listened 2.0 s')
+    assert report.endswith('Healthy: no problems found.\n')
+    assert '5 frames, 1 tree.' in report
+
+
+def test_no_data():
+    """Nothing received is an error that names both topics."""
+    findings = diagnose([], listen_ns=3 * S)
+    assert kinds(findings) == ['no_data']
+    assert '/tf or /tf_static in 3.000 s' in findings[0].message
+    assert exit_code(findings) == 1
+
+
+def test_missing_frame_with_close_match_and_slash():
+    """Unknown frames get close matches; a leading slash is explained."""
+    findings = diagnose(healthy(), frames=['base_lnk', '/laser', 'zzz'])
+    messages = [f.message for f in findings if f.kind == 'missing_frame']
+    assert "Frame 'base_lnk' does not exist in the tf tree: did you mean 'base_link'?" in messages
+    assert any("'laser' exists: tf2 frame ids must not start with '/'" in m for m in messages)
+    assert "Frame 'zzz' does not exist in the tf tree." in messages
+
+
+def test_disconnected_names_islands_and_missing_odom_link():
+    """Two trees: each island is named and odom→base_link is suggested."""
+    observations = [static('map', 'odom'), static('base_link', 'laser')]
+    findings = diagnose(observations, frames=['map', 'laser'])
+    assert kinds(findings) == ['disconnected']
+    finding = findings[0]
+    assert 'tree 1 (root base_link): base_link, laser' in finding.message
+    assert 'tree 2 (root map): map, odom' in finding.message
+    assert "'map' in tree 2, 'laser' in tree 1" in finding.message
+    assert 'odom→base_link' in finding.fix
+    assert '--frame-id odom --child-frame-id base_link' in finding.fix
+
+
+def test_disconnected_without_rep105_names_roots():
+    """Islands outside REP 105 get a generic fix naming the roots to connect."""
+    findings = diagnose([static('a', 'b'), static('a', 'c'), static('x', 'y')])
+    assert kinds(findings) == ['disconnected']
+    assert 'root (x)' in findings[0].fix
+
+
+def test_two_parents():
+    """A child published under two parents is reported with both parents and topics."""
+    observations = [*healthy(), static('map', 'laser')]
+    findings = diagnose(observations)
+    finding = next(f for f in findings if f.kind == 'two_parents')
+    assert finding.frames == ('laser', 'base_link', 'map')
+    assert "'base_link' (1 message on /tf_static)" in finding.message
+
+
+def test_static_and_dynamic():
+    """A frame on both /tf and /tf_static is an error."""
+    observations = [*healthy(), static('odom', 'base_link')]
+    assert 'static_and_dynamic' in kinds(diagnose(observations))
+
+
+def test_conflicting_static_values():
+    """Two different static transforms for one child are a fight."""
+    observations = [*healthy(), static('base_link', 'laser', (1.0, 0.0, 0.0))]
+    finding = next(f for f in diagnose(observations) if f.kind == 'publishers_fighting')
+    assert '2 different static transforms' in finding.message
+
+
+def test_dynamic_fight_from_flipping_values_and_publishers():
+    """Values jumping back and forth, or two publisher ids, reveal two publishers on /tf."""
+    flipping = stream('odom', 'base_link', values=[(0.0, 0.0, 0.0), (5.0, 0.0, 0.0)])
+    findings = diagnose([static('map', 'odom'), *flipping])
+    finding = next(f for f in findings if f.kind == 'publishers_fighting')
+    assert 'jumped back and forth' in finding.message
+    two = stream('odom', 'base_link', pub='p1')[::2] + stream('odom', 'base_link', pub='p2')[1::2]
+    finding = next(f for f in diagnose(two) if f.kind == 'publishers_fighting')
+    assert '2 different publishers' in finding.message
+
+
+def test_future_and_old_stamps():
+    """Stamps ahead of or far behind the listener's clock point at the clocks."""
+    future = stream('odom', 'base_link', delay_ns=-3 * S)
+    finding = next(f for f in diagnose(future) if f.kind == 'future_stamps')
+    assert '3.000 s in the future' in finding.message
+    assert 'use_sim_time' in finding.fix
+    sim = [
+        Observation(
+            TF_TOPIC, T0 + i * S // 10, (ObservedTransform('odom', 'base_link', i * S // 10),)
+        )
+        for i in range(1, 30)
+    ]
+    finding = next(f for f in diagnose(sim) if f.kind == 'old_stamps')
+    assert 'simulation time' in finding.message
+
+
+def test_zero_stamps():
+    """Dynamic transforms stamped 0 are reported."""
+    zero = [
+        Observation(TF_TOPIC, T0 + i, (ObservedTransform('odom', 'base_link', 0),))
+        for i in range(5)
+    ]
+    assert kinds(diagnose(zero)) == ['zero_stamps']
+
+
+def test_sparse_data():
+    """Slow or single-sample dynamic data is an extrapolation risk."""
+    slow = stream('odom', 'base_link', rate_hz=1.0, seconds=4.0)
+    finding = next(f for f in diagnose(slow) if f.kind == 'sparse_data')
+    assert 'gaps up to 1.000 s' in finding.message
+    once = stream('odom', 'base_link', rate_hz=1.0, seconds=1.0)
+    finding = next(f for f in diagnose(once, listen_ns=3 * S) if f.kind == 'sparse_data')
+    assert 'Only one stamp' in finding.message
+
+
+def test_loop():
+    """A cycle of parent links is an error naming the loop."""
+    findings = diagnose([static('a', 'b'), static('b', 'c'), static('c', 'a')])
+    finding = next(f for f in findings if f.kind == 'loop')
+    assert set(finding.frames) == {'a', 'b', 'c'}
+    assert '→' in finding.message
+
+
+def test_rep105_inverted_and_bypassed():
+    """odom below base_link is inverted; map→base_link beside odom is a warning."""
+    inverted = [static('map', 'base_link'), static('base_link', 'odom')]
+    findings = diagnose(inverted)
+    assert any(f.kind == 'rep105_order' and f.frames == ('odom', 'base_link') for f in findings)
+    bypass = [static('map', 'odom'), static('map', 'base_link')]
+    finding = next(f for f in diagnose(bypass) if f.kind == 'rep105_order')
+    assert finding.severity == 'warning'
+    assert exit_code([finding]) == 1
+
+
+def test_json_report():
+    """--json gives one object with healthy, summary and findings."""
+    observations = [static('map', 'odom'), static('base_link', 'laser')]
+    findings = diagnose(observations)
+    record = json.loads(format_report_json(findings, summarize(observations), 'x'))
+    assert record['healthy'] is False
+    assert record['summary'] == {'messages': 2, 'frames': 4, 'trees': 2}
+    assert record['findings'][0]['kind'] == 'disconnected'
+
+
+def test_snapshot_observations():
+    """A snapshot is diagnosed structurally (no timing checks)."""
+    snapshot = parse_snapshot(
+        'tf_demo_transforms: 1\ntransform_count: 2\ntransforms:\n'
+        '  - {parent: map, child: odom, translation: [0, 0, 0], rotation: [0, 0, 0, 1]}\n'
+        '  - {parent: base_link, child: laser, translation: [0, 0, 0], rotation: [0, 0, 0, 1],'
+        ' static: false, stamp: {sec: 1, nanosec: 0}}\n'
+    )
+    findings = diagnose(observations_from_snapshot(snapshot), check_timing=False)
+    assert kinds(findings) == ['disconnected']

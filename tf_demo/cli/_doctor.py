@@ -1,0 +1,666 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+tf_doctor's analysis: a pure function from observed tf messages to plain-language findings.
+
+The shell (``tf_doctor.py``) records every message it receives on ``/tf`` and ``/tf_static`` as
+an :class:`Observation` (topic, reception time on the listener's clock, publisher identity when
+the transport knows it, and the transforms). :func:`diagnose` turns those records into
+:class:`Finding` s, each with what is wrong, which frames, and the fix. Nothing here does I/O, so
+every check is tested with hand-made observations, and the multi-process tests check that real
+faults produce the same findings.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterable
+from collections.abc import Sequence
+from dataclasses import dataclass
+from dataclasses import field
+import difflib
+import itertools
+import json
+import statistics
+
+from tf_demo.cli._snapshot import find_cycle
+from tf_demo.cli._snapshot import Snapshot
+
+Vec3 = tuple[float, float, float]
+Quat = tuple[float, float, float, float]
+
+TF_TOPIC = '/tf'
+TF_STATIC_TOPIC = '/tf_static'
+NS_PER_S = 1_000_000_000
+# REP 105's chain, outermost first; base_footprint may stand in for base_link.
+REP105_CHAIN = ('earth', 'map', 'odom', 'base_link')
+_BASE_FRAMES = ('base_link', 'base_footprint')
+
+
+@dataclass(frozen=True)
+class ObservedTransform:
+    """One transform of a received message."""
+
+    parent: str
+    child: str
+    stamp_ns: int
+    translation: Vec3 = (0.0, 0.0, 0.0)
+    rotation: Quat = (0.0, 0.0, 0.0, 1.0)
+
+
+@dataclass(frozen=True)
+class Observation:
+    """One received tf message: topic, reception time (listener clock) and its transforms."""
+
+    topic: str
+    receive_ns: int
+    transforms: tuple[ObservedTransform, ...]
+    publisher: str = ''
+
+
+@dataclass(frozen=True)
+class Thresholds:
+    """Limits of the timing checks (seconds)."""
+
+    future_tolerance_s: float = 0.5
+    old_tolerance_s: float = 5.0
+    max_gap_s: float = 0.5
+    value_tolerance: float = 1e-9
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One problem: a short kind, severity ('error', 'warning' or 'info'), message and fix."""
+
+    kind: str
+    severity: str
+    frames: tuple[str, ...]
+    message: str
+    fix: str
+
+
+@dataclass
+class _ChildStats:
+    parents: Counter[str] = field(default_factory=Counter)
+    topics: Counter[str] = field(default_factory=Counter)
+    publishers: set[str] = field(default_factory=set)
+    parent_by_topic: dict[str, set[str]] = field(default_factory=dict)
+    static_values: list[tuple[Vec3, Quat]] = field(default_factory=list)
+    dynamic: list[tuple[int, int, Vec3, Quat]] = field(default_factory=list)
+    latest_parent: str = ''
+
+
+def _same(a: tuple[Vec3, Quat], b: tuple[Vec3, Quat], tolerance: float) -> bool:
+    return all(abs(x - y) <= tolerance for x, y in zip(a[0] + a[1], b[0] + b[1], strict=True))
+
+
+def _distinct_values(
+    values: Iterable[tuple[Vec3, Quat]], tolerance: float
+) -> list[tuple[Vec3, Quat]]:
+    distinct: list[tuple[Vec3, Quat]] = []
+    for value in values:
+        if not any(_same(value, seen, tolerance) for seen in distinct):
+            distinct.append(value)
+    return distinct
+
+
+def _gather(observations: Sequence[Observation]) -> dict[str, _ChildStats]:
+    stats: dict[str, _ChildStats] = {}
+    for observation in sorted(observations, key=lambda o: o.receive_ns):
+        for transform in observation.transforms:
+            entry = stats.setdefault(transform.child, _ChildStats())
+            entry.parents[transform.parent] += 1
+            entry.topics[observation.topic] += 1
+            entry.parent_by_topic.setdefault(observation.topic, set()).add(transform.parent)
+            if observation.publisher:
+                entry.publishers.add(observation.publisher)
+            value = (transform.translation, transform.rotation)
+            if observation.topic == TF_STATIC_TOPIC:
+                entry.static_values.append(value)
+            else:
+                entry.dynamic.append(
+                    (observation.receive_ns, transform.stamp_ns, value[0], value[1])
+                )
+            entry.latest_parent = transform.parent
+    return stats
+
+
+def _islands(parent_of: dict[str, str]) -> list[list[str]]:
+    """Return the connected components of the frame graph, biggest first, members sorted."""
+    neighbours: dict[str, set[str]] = {}
+    for child, parent in parent_of.items():
+        neighbours.setdefault(child, set()).add(parent)
+        neighbours.setdefault(parent, set()).add(child)
+    seen: set[str] = set()
+    islands: list[list[str]] = []
+    for start in sorted(neighbours):
+        if start in seen:
+            continue
+        stack, members = [start], []
+        seen.add(start)
+        while stack:
+            frame = stack.pop()
+            members.append(frame)
+            for other in neighbours[frame]:
+                if other not in seen:
+                    seen.add(other)
+                    stack.append(other)
+        islands.append(sorted(members))
+    islands.sort(key=lambda members: (-len(members), members[0]))
+    return islands
+
+
+def _ancestors(frame: str, parent_of: dict[str, str]) -> list[str]:
+    chain: list[str] = []
+    seen = {frame}
+    while frame in parent_of:
+        frame = parent_of[frame]
+        if frame in seen:
+            break
+        seen.add(frame)
+        chain.append(frame)
+    return chain
+
+
+def _root(frame: str, parent_of: dict[str, str]) -> str:
+    chain = _ancestors(frame, parent_of)
+    return chain[-1] if chain else frame
+
+
+def _rep105_rank(frame: str) -> int | None:
+    if frame in _BASE_FRAMES:
+        return REP105_CHAIN.index('base_link')
+    return REP105_CHAIN.index(frame) if frame in REP105_CHAIN else None
+
+
+def _missing_link(root: str, island_of: dict[str, int], own: int) -> str | None:
+    """Return the REP 105 link that likely joins ``root`` to another tree, as 'a→b'."""
+    rank = _rep105_rank(root)
+    if rank is None:
+        return None
+    for candidate in reversed(REP105_CHAIN[:rank]):
+        if candidate in island_of and island_of[candidate] != own:
+            return f'{candidate}→{root}'
+    return None
+
+
+_LINK_PUBLISHERS = {
+    'map→odom': 'a localization or SLAM node (AMCL, slam_toolbox, robot_localization)',
+    'odom→base_link': 'the odometry source (the base driver, a diff-drive controller or '
+    'robot_localization)',
+    'odom→base_footprint': 'the odometry source (the base driver, a diff-drive controller or '
+    'robot_localization)',
+    'earth→map': 'a map server or a static_transform_publisher',
+}
+
+
+def _format_members(members: Sequence[str], limit: int = 8) -> str:
+    shown = ', '.join(members[:limit])
+    return shown + (f', … ({len(members) - limit} more)' if len(members) > limit else '')
+
+
+def _seconds(ns: float) -> str:
+    return f'{ns / NS_PER_S:.3f} s'
+
+
+def diagnose(
+    observations: Sequence[Observation],
+    *,
+    listen_ns: int = 0,
+    frames: Sequence[str] = (),
+    check_timing: bool = True,
+    thresholds: Thresholds | None = None,
+) -> list[Finding]:
+    """
+    Find every tf problem the observations show.
+
+    :param observations: the received messages, in any order.
+    :param listen_ns: how long the recording lasted (for the messages that mention it).
+    :param frames: frames the user wants to use (``--frames``): each must exist and all must be
+        connected.
+    :param check_timing: False for snapshots, which carry no reception times.
+    :return: findings, errors first, in a stable order.
+    """
+    limits = thresholds or Thresholds()
+    findings: list[Finding] = []
+    if not observations or not any(o.transforms for o in observations):
+        findings.append(
+            Finding(
+                'no_data',
+                'error',
+                tuple(frames),
+                f'No transforms were received on {TF_TOPIC} or {TF_STATIC_TOPIC}'
+                + (f' in {_seconds(listen_ns)}.' if listen_ns else '.'),
+                'Start the nodes that broadcast tf, and check that they use the same '
+                'ROS_DOMAIN_ID and ROS_AUTOMATIC_DISCOVERY_RANGE as this tool; listen longer '
+                'with -t if they publish slowly.',
+            )
+        )
+        findings.extend(_missing_frames(frames, set()))
+        return findings
+
+    stats = _gather(observations)
+    parent_of = {child: entry.latest_parent for child, entry in stats.items()}
+    known = set(parent_of) | set(parent_of.values())
+
+    findings.extend(_missing_frames(frames, known))
+    findings.extend(_parent_conflicts(stats, limits))
+    cycle = find_cycle((parent, child) for child, parent in parent_of.items())
+    if cycle is not None:
+        findings.append(
+            Finding(
+                'loop',
+                'error',
+                tuple(cycle[:-1]),
+                f'The parent links form a loop: {" → ".join(cycle)}. tf2 cannot walk from these '
+                'frames to a root, so every lookup through them fails.',
+                'A loop usually means one link is published the wrong way round (child and '
+                'parent swapped). Find the publisher of each link in the loop and invert or '
+                'remove one of them.',
+            )
+        )
+    findings.extend(_disconnected(parent_of, frames))
+    findings.extend(_rep105(parent_of))
+    if check_timing:
+        findings.extend(_timing(stats, listen_ns, limits))
+    order = {'error': 0, 'warning': 1, 'info': 2}
+    findings.sort(key=lambda f: order[f.severity])
+    return findings
+
+
+def _missing_frames(frames: Sequence[str], known: set[str]) -> list[Finding]:
+    findings = []
+    for frame in frames:
+        if frame in known:
+            continue
+        hints = []
+        if frame.startswith('/') and frame.lstrip('/') in known:
+            hints.append(f"'{frame.lstrip('/')}' exists: tf2 frame ids must not start with '/'")
+        close = difflib.get_close_matches(frame, sorted(known), n=3, cutoff=0.6)
+        if close and not hints:
+            hints.append('did you mean ' + ' or '.join(f"'{c}'" for c in close) + '?')
+        message = f"Frame '{frame}' does not exist in the tf tree"
+        message += f': {hints[0]}' if hints else '.'
+        findings.append(
+            Finding(
+                'missing_frame',
+                'error',
+                (frame,),
+                message,
+                'Use one of the existing frame names (view_frames lists them), or start the '
+                f"node that should publish '{frame}'.",
+            )
+        )
+    return findings
+
+
+def _parent_conflicts(stats: dict[str, _ChildStats], limits: Thresholds) -> list[Finding]:
+    findings = []
+    for child in sorted(stats):
+        entry = stats[child]
+        if len(entry.parents) > 1:
+            described = ', '.join(
+                f"'{parent}' ({count} message{'s' if count != 1 else ''}"
+                + ''.join(
+                    f' on {topic}'
+                    for topic, parents in sorted(entry.parent_by_topic.items())
+                    if parent in parents
+                )
+                + ')'
+                for parent, count in sorted(entry.parents.items())
+            )
+            findings.append(
+                Finding(
+                    'two_parents',
+                    'error',
+                    (child, *sorted(entry.parents)),
+                    f"Frame '{child}' has {len(entry.parents)} parents: {described}. tf2 keeps "
+                    'one parent per frame and switches to whichever arrived last, so the tree '
+                    'jumps and lookups through it flicker.',
+                    f'Every frame has exactly one parent. Stop one of the nodes publishing '
+                    f"'{child}', or give one of them a different child frame name (for example "
+                    'a namespace prefix per robot).',
+                )
+            )
+        if len(entry.topics) > 1:
+            findings.append(
+                Finding(
+                    'static_and_dynamic',
+                    'error',
+                    (child,),
+                    f"Frame '{child}' arrives on both {TF_TOPIC} ({entry.topics[TF_TOPIC]} "
+                    f'messages) and {TF_STATIC_TOPIC} ({entry.topics[TF_STATIC_TOPIC]}). '
+                    'The static transform is valid for all time and the dynamic one only at its '
+                    'stamps, so lookups give different answers depending on the time asked.',
+                    'Publish each frame on one topic only: /tf_static for fixed mounts '
+                    '(static_transform_publisher, robot_state_publisher for fixed joints), /tf '
+                    'for moving frames.',
+                )
+            )
+        distinct_static = _distinct_values(entry.static_values, limits.value_tolerance)
+        if len(distinct_static) > 1:
+            findings.append(
+                Finding(
+                    'publishers_fighting',
+                    'error',
+                    (child,),
+                    f"Frame '{child}' has {len(distinct_static)} different static transforms "
+                    f'on {TF_STATIC_TOPIC}; which one a listener keeps depends on arrival '
+                    'order.',
+                    'Run one static publisher per frame: stop the duplicate '
+                    'static_transform_publisher or remove the frame from one URDF.',
+                )
+            )
+        dynamic_publishers = len(entry.publishers) if entry.dynamic else 0
+        flips = _value_flips(entry.dynamic, limits.value_tolerance)
+        regressions = sum(
+            1 for a, b in zip(entry.dynamic, entry.dynamic[1:], strict=False) if b[1] < a[1]
+        )
+        if dynamic_publishers > 1 or flips >= 3 or regressions >= 3:
+            evidence = []
+            if dynamic_publishers > 1:
+                evidence.append(f'{dynamic_publishers} different publishers send it')
+            if flips >= 3:
+                evidence.append(f'its value jumped back and forth {flips} times')
+            if regressions >= 3:
+                evidence.append(f'its stamps went backwards {regressions} times')
+            findings.append(
+                Finding(
+                    'publishers_fighting',
+                    'error',
+                    (child,),
+                    f"Frame '{child}' looks published by more than one node on {TF_TOPIC}: "
+                    + ', '.join(evidence)
+                    + ". Listeners see it jump between the publishers' values.",
+                    f"Keep a single publisher for '{child}' (for example do not run both "
+                    'robot_state_publisher and another broadcaster for the same joint, or two '
+                    'odometry sources with publish_tf enabled).',
+                )
+            )
+    return findings
+
+
+def _value_flips(dynamic: list[tuple[int, int, Vec3, Quat]], tolerance: float) -> int:
+    """Count A, B, A patterns: a value that returns right after a different one."""
+    flips = 0
+    for first, second, third in zip(dynamic, dynamic[1:], dynamic[2:], strict=False):
+        a, b, c = (first[2], first[3]), (second[2], second[3]), (third[2], third[3])
+        if _same(a, c, tolerance) and not _same(a, b, tolerance):
+            flips += 1
+    return flips
+
+
+def _disconnected(parent_of: dict[str, str], frames: Sequence[str]) -> list[Finding]:
+    islands = _islands(parent_of)
+    if len(islands) < 2:
+        return []
+    island_of = {frame: index for index, members in enumerate(islands) for frame in members}
+    lines = []
+    links = []
+    for index, members in enumerate(islands):
+        root = _root(members[0], parent_of)
+        lines.append(f'tree {index + 1} (root {root}): {_format_members(members)}')
+        link = _missing_link(root, island_of, index)
+        if link is not None:
+            links.append(link)
+    message = f'The frames form {len(islands)} separate trees; lookups between trees fail: '
+    message += '; '.join(lines) + '.'
+    asked = [f for f in frames if f in island_of]
+    if len({island_of[f] for f in asked}) > 1:
+        message += ' The frames you asked about are in different trees: ' + ', '.join(
+            f"'{f}' in tree {island_of[f] + 1}" for f in asked
+        )
+        message += '.'
+    if links:
+        fix = 'The likely missing link' + ('s are ' if len(links) > 1 else ' is ')
+        fix += ', '.join(
+            link
+            + (
+                f' (normally published by {_LINK_PUBLISHERS[link]})'
+                if link in _LINK_PUBLISHERS
+                else ''
+            )
+            for link in links
+        )
+        fix += '. Start that publisher, or for a fixed offset: static_transform_publisher '
+        first_parent, first_child = links[0].split('→')
+        fix += f'--frame-id {first_parent} --child-frame-id {first_child}.'
+    else:
+        roots = [_root(members[0], parent_of) for members in islands]
+        fix = (
+            'Connect each tree to the main one by publishing a transform whose child is its '
+            f'root ({", ".join(roots[1:])}) and whose parent is a frame of tree 1.'
+        )
+    return [
+        Finding(
+            'disconnected', 'error', tuple(_root(m[0], parent_of) for m in islands), message, fix
+        )
+    ]
+
+
+def _rep105(parent_of: dict[str, str]) -> list[Finding]:
+    findings = []
+    present = [
+        f for f in ('map', 'odom', *_BASE_FRAMES) if f in parent_of or f in set(parent_of.values())
+    ]
+    for later in present:
+        for earlier in present:
+            rank_early, rank_late = _rep105_rank(earlier), _rep105_rank(later)
+            if rank_early is None or rank_late is None or rank_early >= rank_late:
+                continue
+            if later in _ancestors(earlier, parent_of):
+                findings.append(
+                    Finding(
+                        'rep105_order',
+                        'error',
+                        (earlier, later),
+                        f"'{earlier}' is below '{later}' in the tree; REP 105 orders them "
+                        'map → odom → base_link (each frame the parent of the next).',
+                        f'Publish {earlier}→{later} instead of {later}→{earlier}: invert that '
+                        "transform, or set the publisher's frame parameters the other way round.",
+                    )
+                )
+    if 'odom' in present and any(b in present for b in _BASE_FRAMES) and 'map' in present:
+        findings.extend(
+            Finding(
+                'rep105_order',
+                'warning',
+                ('map', 'odom', base),
+                f"'{base}' hangs directly off 'map' although 'odom' exists; REP 105 "
+                f'expects map → odom → {base}.',
+                f'Let localization publish map→odom and odometry publish odom→{base}, '
+                f'instead of one node publishing map→{base}.',
+            )
+            for base in _BASE_FRAMES
+            if parent_of.get(base) == 'map'
+        )
+    return findings
+
+
+def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -> list[Finding]:
+    findings = []
+    for child in sorted(stats):
+        samples = stats[child].dynamic
+        if not samples:
+            continue
+        parent = stats[child].latest_parent
+        offsets = [receive - stamp for receive, stamp, _, _ in samples]
+        median_offset = statistics.median(offsets)
+        if all(stamp == 0 for _, stamp, _, _ in samples):
+            findings.append(
+                Finding(
+                    'zero_stamps',
+                    'error',
+                    (child,),
+                    f'Transforms {parent}→{child} on {TF_TOPIC} carry stamp 0. Time-based '
+                    'lookups need real stamps; with 0 every lookup at a real time is an '
+                    'extrapolation error.',
+                    'Stamp each transform with the node clock (node.get_clock().now()), or '
+                    'publish it on /tf_static if it never moves.',
+                )
+            )
+            continue
+        if -median_offset > limits.future_tolerance_s * NS_PER_S:
+            findings.append(
+                Finding(
+                    'future_stamps',
+                    'error',
+                    (child,),
+                    f'Transforms {parent}→{child} are stamped {_seconds(-median_offset)} in the '
+                    "future of this listener's clock. Lookups at 'now' miss them and old data is "
+                    'dropped as they arrive.',
+                    'The publisher and listeners use different clocks: check use_sim_time (all '
+                    'nodes true with a /clock source, or all false) and synchronize machine '
+                    'clocks (chrony/NTP).',
+                )
+            )
+        elif median_offset > limits.old_tolerance_s * NS_PER_S:
+            sim_hint = ''
+            if samples[-1][1] < 10**9 * 10**6 <= samples[-1][0]:
+                sim_hint = (
+                    ' The stamps look like simulation time (seconds since start) while this '
+                    'listener runs on the wall clock.'
+                )
+            findings.append(
+                Finding(
+                    'old_stamps',
+                    'error',
+                    (child,),
+                    f'Transforms {parent}→{child} are already {_seconds(median_offset)} old when '
+                    f'they arrive (the buffer keeps 10 s), so lookups at now() fail with '
+                    f'extrapolation into the future.{sim_hint}',
+                    'Check use_sim_time: a publisher on sim time and a listener on wall time (or '
+                    'the reverse) disagree by years; otherwise synchronize clocks or fix the '
+                    "publisher's stamping.",
+                )
+            )
+        stamps = sorted({stamp for _, stamp, _, _ in samples})
+        window = listen_ns or (samples[-1][0] - samples[0][0])
+        if len(stamps) == 1 and window >= NS_PER_S:
+            findings.append(
+                Finding(
+                    'sparse_data',
+                    'warning',
+                    (child,),
+                    f'Only one stamp of {parent}→{child} arrived in {_seconds(window)}. Lookups '
+                    'at any other time fail with extrapolation errors.',
+                    'Publish moving frames continuously (10 Hz or more), or publish a fixed '
+                    'transform once on /tf_static.',
+                )
+            )
+            continue
+        gaps = [b - a for a, b in itertools.pairwise(stamps)]
+        if gaps and max(gaps) > limits.max_gap_s * NS_PER_S:
+            rate = (len(stamps) - 1) / ((stamps[-1] - stamps[0]) / NS_PER_S)
+            findings.append(
+                Finding(
+                    'sparse_data',
+                    'warning',
+                    (child,),
+                    f'{parent}→{child} arrives at {rate:.3g} Hz with gaps up to '
+                    f'{_seconds(max(gaps))}. Lookups at now() need data newer than the request '
+                    'and will extrapolate into the future for up to that long.',
+                    'Publish faster, look up at time 0 (latest available) or with a timeout, or '
+                    'interpolate at the stamp of the data you transform.',
+                )
+            )
+    return findings
+
+
+def observations_from_snapshot(snapshot: Snapshot) -> list[Observation]:
+    """Turn a saved snapshot into observations (one message per transform, no timing)."""
+    return [
+        Observation(
+            TF_STATIC_TOPIC if entry.is_static else TF_TOPIC,
+            entry.stamp_ns or 0,
+            (
+                ObservedTransform(
+                    entry.parent,
+                    entry.child,
+                    entry.stamp_ns or 0,
+                    entry.translation,
+                    entry.rotation,
+                ),
+            ),
+        )
+        for entry in snapshot.transforms
+    ]
+
+
+def summarize(observations: Sequence[Observation]) -> dict[str, int]:
+    """Count for the report's first line: messages, frames and trees."""
+    parent_of: dict[str, str] = {}
+    for observation in sorted(observations, key=lambda o: o.receive_ns):
+        for transform in observation.transforms:
+            parent_of[transform.child] = transform.parent
+    return {
+        'messages': len(observations),
+        'frames': len(set(parent_of) | set(parent_of.values())),
+        'trees': len(_islands(parent_of)),
+    }
+
+
+def format_report(findings: Sequence[Finding], summary: dict[str, int], source: str) -> str:
+    """Format the plain-language report: each finding with its fix, then the verdict."""
+    lines = [
+        f'tf_doctor: {source}: {summary["messages"]} messages, {summary["frames"]} frames, '
+        f'{summary["trees"]} tree{"s" if summary["trees"] != 1 else ""}.'
+    ]
+    for finding in findings:
+        lines.append('')
+        lines.append(f'{finding.severity.upper()} [{finding.kind}] {finding.message}')
+        lines.append(f'  Fix: {finding.fix}')
+    problems = [f for f in findings if f.severity != 'info']
+    lines.append('')
+    if problems:
+        errors = sum(1 for f in problems if f.severity == 'error')
+        warnings = len(problems) - errors
+        lines.append(
+            f'Found {errors} error{"s" if errors != 1 else ""} and '
+            f'{warnings} warning{"s" if warnings != 1 else ""}.'
+        )
+    else:
+        lines.append('Healthy: no problems found.')
+    return '\n'.join(lines) + '\n'
+
+
+def format_report_json(findings: Sequence[Finding], summary: dict[str, int], source: str) -> str:
+    """Format the report as one JSON object (``--json``)."""
+    return (
+        json.dumps(
+            {
+                'source': source,
+                'healthy': not any(f.severity != 'info' for f in findings),
+                'summary': summary,
+                'findings': [
+                    {
+                        'kind': f.kind,
+                        'severity': f.severity,
+                        'frames': list(f.frames),
+                        'message': f.message,
+                        'fix': f.fix,
+                    }
+                    for f in findings
+                ],
+            },
+            ensure_ascii=False,
+        )
+        + '\n'
+    )
+
+
+def exit_code(findings: Sequence[Finding]) -> int:
+    """Return 0 when healthy, 1 when an error or a warning was found."""
+    return 1 if any(f.severity != 'info' for f in findings) else 0
