@@ -1,0 +1,459 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+robot_state_publisher: publishes a robot's link transforms from its URDF and its joint states.
+
+The contract is upstream's (ROS 2 Jazzy, ``ros/robot_state_publisher``), see
+``spec/robot_state_publisher.md``:
+
+- parameters ``robot_description`` (URDF text), ``publish_frequency`` (default 20.0, valid in
+  (0, 1000]), ``ignore_timestamp``, ``frame_prefix``; changes are validated before they are
+  accepted, and an accepted ``robot_description`` reloads the model;
+- fixed (and planar) joints on ``/tf_static`` as one accumulated, latched message;
+- for each accepted ``joint_states`` message, one ``TFMessage`` on ``/tf`` with the moving
+  joints it names (and their mimics), stamped with the message's stamp, subject to upstream's
+  throttle;
+- ``robot_description`` republished (reliable, transient local, depth 1).
+
+Beyond upstream, for the standalone world where no launch file runs xacro: ``urdf_file`` (a
+URDF or xacro path, used when ``robot_description`` is empty) and ``xacro_args``
+(``'name:=value ...'``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from collections.abc import Sequence
+from struct import Struct
+import sys
+from typing import Any
+
+from tf_demo.urdf import JointTransform
+from tf_demo.urdf import parse_xacro_args
+from tf_demo.urdf import RobotModel
+from tf_demo.urdf import UrdfError
+
+__all__ = [
+    'JointStateThrottle',
+    'RobotDescriptionError',
+    'TfMessageEncoder',
+    'check_publish_frequency',
+    'joint_state_problem',
+    'main',
+    'positions_from_joint_state',
+]
+
+NODE_NAME = 'robot_state_publisher'
+DEFAULT_PUBLISH_FREQUENCY = 20.0
+_NS_PER_MS = 1_000_000
+
+
+class RobotDescriptionError(ValueError):
+    """The node cannot start: no usable robot description or an invalid parameter."""
+
+
+def check_publish_frequency(value: float) -> bool:
+    """Tell whether ``publish_frequency`` is acceptable: 0 < value <= 1000."""
+    return 0.0 < value <= 1000.0
+
+
+def publish_interval_ns(publish_frequency: float) -> int:
+    """Return upstream's throttle interval: ``floor(1000 / frequency)`` whole milliseconds."""
+    return int(1000.0 / publish_frequency) * _NS_PER_MS
+
+
+class JointStateThrottle:
+    """
+    Upstream's rule for which ``joint_states`` messages are published.
+
+    A message passes when ``ignore_timestamp`` is set, or when its stamp is at least
+    ``floor(1000 / publish_frequency)`` ms after the last published stamp of the least recently
+    published joint it names (never-seen joints count as 0, the minimum starts from the node's
+    ``now``). A node clock that moves backwards forgets every last-published stamp.
+    """
+
+    def __init__(self) -> None:
+        self.last_published_ns: dict[str, int] = {}
+        self._last_callback_ns = 0
+
+    def clock_moved_backwards(self, now_ns: int) -> bool:
+        """Record the node clock at a callback; reset and return True if it went backwards."""
+        backwards = self._last_callback_ns > now_ns
+        if backwards:
+            self.last_published_ns.clear()
+        self._last_callback_ns = now_ns
+        return backwards
+
+    def should_publish(
+        self,
+        names: Sequence[str],
+        stamp_ns: int,
+        now_ns: int,
+        interval_ns: int,
+        ignore_timestamp: bool,
+    ) -> bool:
+        """Tell whether a message with these joint names and stamp is published."""
+        if ignore_timestamp:
+            return True
+        last = now_ns
+        last_published = self.last_published_ns
+        for name in names:
+            seen = last_published.get(name, 0)
+            last = min(last, seen)
+        return stamp_ns >= last + interval_ns
+
+    def record(self, names: Iterable[str], stamp_ns: int) -> None:
+        """Remember ``stamp_ns`` as the last published time of every name (known or not)."""
+        last_published = self.last_published_ns
+        for name in names:
+            last_published[name] = stamp_ns
+
+
+def joint_state_problem(
+    names: Sequence[str], positions: Sequence[float]
+) -> tuple[int, str] | None:
+    """
+    Return ``(logging level, upstream text)`` when a JointState must be dropped, else None.
+
+    Upstream drops a message whose ``name`` and ``position`` lengths differ, with a warning when
+    ``position`` is empty and an error otherwise.
+    """
+    if len(names) == len(positions):
+        return None
+    if len(positions) == 0:
+        return (
+            30,
+            'Robot state publisher ignored a JointState message about joint(s) '
+            f'"{names[0]}"(,...) whose position member was empty.',
+        )
+    return (40, 'Robot state publisher ignored an invalid JointState message')
+
+
+def positions_from_joint_state(
+    names: Sequence[str], positions: Sequence[float]
+) -> dict[str, float]:
+    """Map names to positions; when a name repeats, its first position wins (as upstream)."""
+    values: dict[str, float] = {}
+    for name, position in zip(names, positions, strict=True):
+        if name not in values:
+            values[name] = position
+    return values
+
+
+_HEADER = b'\x00\x01\x00\x00'
+_U32 = Struct('<I')
+_STAMP = Struct('<iI')
+
+
+def _cdr_string(text: str) -> bytes:
+    data = text.encode('utf-8')
+    return _U32.pack(len(data) + 1) + data + b'\x00'
+
+
+class TfMessageEncoder:
+    """
+    Encode ``tf2_msgs/msg/TFMessage`` CDR bytes straight from joint transforms.
+
+    Byte-identical to ROS 2's plain CDR (little endian, ``00 01 00 00`` header). The frame-id
+    strings and padding of each (parent, child) pair are built once per prefix; a message then
+    costs one ``struct.pack`` per transform.
+    """
+
+    def __init__(self, frame_prefix: str = '') -> None:
+        self.frame_prefix = frame_prefix
+        self._packers: dict[tuple[str, str], tuple[Struct, bytes, Struct, bytes]] = {}
+
+    def _packer_for(self, parent: str, child: str) -> tuple[Struct, bytes, Struct, bytes]:
+        names = _cdr_string(self.frame_prefix + parent)
+        names += b'\x00' * (-len(names) % 4)
+        names += _cdr_string(self.frame_prefix + child)
+        # Elements start 4 mod 8 (the first, after the sequence length) or 0 mod 8 (the rest);
+        # the 8-byte stamp keeps that, then the doubles need 8-byte alignment.
+        variants: list[Any] = []
+        for start in (4, 0):
+            middle = names + b'\x00' * (-(start + 8 + len(names)) % 8)
+            variants += [Struct(f'<iI{len(middle)}s7d'), middle]
+        packer = (variants[0], variants[1], variants[2], variants[3])
+        self._packers[(parent, child)] = packer
+        return packer
+
+    def encode(self, transforms: Sequence[JointTransform], sec: int, nanosec: int) -> bytes:
+        """Return the serialised TFMessage with every transform stamped ``sec.nanosec``."""
+        parts = [_HEADER, _U32.pack(len(transforms))]
+        packers = self._packers
+        first = True
+        for parent, child, (tx, ty, tz), (qx, qy, qz, qw) in transforms:
+            packer = packers.get((parent, child)) or self._packer_for(parent, child)
+            if first:
+                parts.append(packer[0].pack(sec, nanosec, packer[1], tx, ty, tz, qx, qy, qz, qw))
+                first = False
+            else:
+                parts.append(packer[2].pack(sec, nanosec, packer[3], tx, ty, tz, qx, qy, qz, qw))
+        return b''.join(parts)
+
+
+def _non_ros_arguments(args: Sequence[str]) -> list[str]:
+    """Return the arguments outside ``--ros-args ... [--]`` blocks (the program name excluded)."""
+    plain: list[str] = []
+    inside = False
+    for arg in args:
+        if arg == '--ros-args':
+            inside = True
+        elif arg == '--' and inside:
+            inside = False
+        elif not inside:
+            plain.append(arg)
+    return plain
+
+
+def _load_model(xml: str) -> RobotModel:
+    """Build the model; an invalid description raises RobotDescriptionError with the reason."""
+    if not xml:
+        msg = 'Empty URDF is not allowed'
+        raise RobotDescriptionError(msg)
+    try:
+        return RobotModel.from_string(xml, source='robot_description')
+    except UrdfError as error:
+        msg = f'Unable to initialize urdf::model from robot description: {error}'
+        raise RobotDescriptionError(msg) from None
+
+
+def _build_node_class() -> type:
+    """Define the node class on the selected backend's Node (imported only when a node runs)."""
+    from tf_demo.transport import Node
+    from tf_demo.transport.messages import geometry_msgs
+    from tf_demo.transport.messages import sensor_msgs
+    from tf_demo.transport.messages import std_msgs
+    from tf_demo.transport.messages import tf2_msgs
+    from tf_demo.transport.parameters import SetParametersResult
+    from tf_demo.transport.qos import DurabilityPolicy
+    from tf_demo.transport.qos import DynamicBroadcasterQoS
+    from tf_demo.transport.qos import HistoryPolicy
+    from tf_demo.transport.qos import qos_profile_sensor_data
+    from tf_demo.transport.qos import QoSProfile
+    from tf_demo.transport.qos import ReliabilityPolicy
+
+    latched = QoSProfile(
+        depth=1,
+        history=HistoryPolicy.KEEP_LAST,
+        reliability=ReliabilityPolicy.RELIABLE,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL,
+    )
+
+    class RobotStatePublisher(Node):  # type: ignore[misc, valid-type]
+        """The robot_state_publisher node (see the module docstring)."""
+
+        def __init__(self, file_arguments: Sequence[str] = (), **kwargs: Any) -> None:
+            super().__init__(NODE_NAME, **kwargs)
+            logger = self.get_logger()
+            xml = self.declare_parameter('robot_description', '').value
+            urdf_file = self.declare_parameter('urdf_file', '').value
+            xacro_args = self.declare_parameter('xacro_args', '').value
+            if not xml and not urdf_file and file_arguments:
+                logger.warning(
+                    'No robot_description parameter, but command-line argument available.  '
+                    'Assuming argument is name of URDF file.  This backwards compatibility '
+                    'fallback will be removed in the future.'
+                )
+                urdf_file = file_arguments[0]
+            if not xml and urdf_file:
+                try:
+                    xml = RobotModel.from_file(urdf_file, parse_xacro_args(xacro_args)).xml
+                except (UrdfError, ValueError) as error:
+                    msg = f'Failed to load urdf_file {urdf_file}: {error}'
+                    raise RobotDescriptionError(msg) from None
+                self.set_parameters([_parameter('robot_description', xml)])
+            if not xml:
+                msg = (
+                    'robot_description parameter must not be empty (set it, or urdf_file to a '
+                    'URDF or xacro file)'
+                )
+                raise RobotDescriptionError(msg)
+            self._description_pub = self.create_publisher(
+                std_msgs.String, 'robot_description', latched
+            )
+            self._model = _load_model(xml)
+            self._announce_model(xml)
+
+            frequency = self.declare_parameter('publish_frequency', DEFAULT_PUBLISH_FREQUENCY)
+            self._publish_frequency = float(frequency.value)
+            if not check_publish_frequency(self._publish_frequency):
+                msg = 'publish_frequency must be between 0 (exclusive) and 1000'
+                raise RobotDescriptionError(msg)
+            self._frame_prefix = str(self.declare_parameter('frame_prefix', '').value)
+            self._ignore_timestamp = bool(self.declare_parameter('ignore_timestamp', False).value)
+
+            self._throttle = JointStateThrottle()
+            self._encoder = TfMessageEncoder(self._frame_prefix)
+            self._raw_tf = True
+            self._static: dict[str, Any] = {}
+            self._tf_pub = self.create_publisher(
+                tf2_msgs.TFMessage, '/tf', DynamicBroadcasterQoS()
+            )
+            self._tf_static_pub = self.create_publisher(tf2_msgs.TFMessage, '/tf_static', latched)
+            self.add_on_set_parameters_callback(self._on_set_parameters)
+            self.create_subscription(
+                sensor_msgs.JointState,
+                'joint_states',
+                self._on_joint_state,
+                qos_profile_sensor_data,
+            )
+            self._publish_fixed_transforms()
+
+        # -- model ---------------------------------------------------------------------------
+        def _announce_model(self, xml: str) -> None:
+            for warning in self._model.warnings:
+                self.get_logger().warning(warning)
+            self._description_pub.publish(std_msgs.String(data=xml))
+            self.get_logger().info('Robot initialized')
+
+        def _publish_fixed_transforms(self) -> None:
+            stamp = self.get_clock().now().to_msg()
+            prefix = self._frame_prefix
+            for parent, child, translation, rotation in self._model.static_transforms():
+                message = _transform_stamped(
+                    geometry_msgs,
+                    stamp,
+                    (prefix + parent, prefix + child, translation, rotation),
+                )
+                self._static[message.child_frame_id] = message
+            self._tf_static_pub.publish(tf2_msgs.TFMessage(transforms=list(self._static.values())))
+
+        # -- parameters ----------------------------------------------------------------------
+        def _on_set_parameters(self, parameters: list[Any]) -> Any:
+            new_model: RobotModel | None = None
+            new_xml = ''
+            updates: dict[str, Any] = {}
+            for parameter in parameters:
+                if parameter.name == 'robot_description':
+                    new_xml = str(parameter.value or '')
+                    try:
+                        new_model = _load_model(new_xml)
+                    except RobotDescriptionError as error:
+                        if new_xml:
+                            self.get_logger().warning(str(error))
+                        return SetParametersResult(successful=False, reason=str(error))
+                elif parameter.name == 'publish_frequency':
+                    if not check_publish_frequency(float(parameter.value)):
+                        return SetParametersResult(
+                            successful=False,
+                            reason='publish_frequency must be between 0.0 (exclusive) and 1000.0',
+                        )
+                    updates['publish_frequency'] = float(parameter.value)
+                elif parameter.name in {'frame_prefix', 'ignore_timestamp'}:
+                    updates[parameter.name] = parameter.value
+            # Everything is valid: apply (upstream applies after the set, from parameter events).
+            if 'publish_frequency' in updates:
+                self._publish_frequency = updates['publish_frequency']
+            if 'ignore_timestamp' in updates:
+                self._ignore_timestamp = bool(updates['ignore_timestamp'])
+            if 'frame_prefix' in updates:
+                self._frame_prefix = str(updates['frame_prefix'])
+                self._encoder = TfMessageEncoder(self._frame_prefix)
+            if new_model is not None:
+                self._model = new_model
+                self._announce_model(new_xml)
+                self._publish_fixed_transforms()
+            return SetParametersResult(successful=True)
+
+        # -- joint states --------------------------------------------------------------------
+        def _on_joint_state(self, message: Any) -> None:
+            names = message.name
+            positions = message.position
+            problem = joint_state_problem(names, positions)
+            if problem is not None:
+                level, text = problem
+                logger = self.get_logger()
+                (logger.warning if level == 30 else logger.error)(text)
+                return
+            now_ns = self.get_clock().now().nanoseconds
+            if self._throttle.clock_moved_backwards(now_ns):
+                self.get_logger().warning(
+                    'Moved backwards in time, re-publishing joint transforms!'
+                )
+            stamp = message.header.stamp
+            sec = stamp.sec
+            nanosec = stamp.nanosec
+            stamp_ns = sec * 1_000_000_000 + nanosec
+            if not self._throttle.should_publish(
+                names,
+                stamp_ns,
+                now_ns,
+                publish_interval_ns(self._publish_frequency),
+                self._ignore_timestamp,
+            ):
+                return
+            transforms = self._model.joint_transforms(positions_from_joint_state(names, positions))
+            self._publish_tf(transforms, stamp, sec, nanosec)
+            self._throttle.record(names, stamp_ns)
+
+        def _publish_tf(
+            self, transforms: list[JointTransform], stamp: Any, sec: int, nanosec: int
+        ) -> None:
+            if self._raw_tf:
+                try:
+                    self._tf_pub.publish(self._encoder.encode(transforms, sec, nanosec))
+                    return
+                except TypeError:
+                    self._raw_tf = False  # this backend only publishes message objects
+            prefix = self._frame_prefix
+            self._tf_pub.publish(
+                tf2_msgs.TFMessage(
+                    transforms=[
+                        _transform_stamped(geometry_msgs, stamp, (prefix + p, prefix + c, t, q))
+                        for p, c, t, q in transforms
+                    ]
+                )
+            )
+
+    return RobotStatePublisher
+
+
+def _parameter(name: str, value: Any) -> Any:
+    from tf_demo.transport.parameters import Parameter
+
+    return Parameter(name, value=value)
+
+
+def _transform_stamped(geometry_msgs: Any, stamp: Any, transform: JointTransform) -> Any:
+    """Build a TransformStamped from ``(parent, child, translation, rotation)``."""
+    parent, child, translation, rotation = transform
+    message = geometry_msgs.TransformStamped()
+    message.header.stamp = stamp
+    message.header.frame_id = parent
+    message.child_frame_id = child
+    t = message.transform.translation
+    t.x, t.y, t.z = translation
+    r = message.transform.rotation
+    r.x, r.y, r.z, r.w = rotation
+    return message
+
+
+def main(args: Sequence[str] | None = None) -> int:
+    """Run robot_state_publisher; return the process exit code."""
+    from tf_demo.transport import run_node
+
+    argv = list(sys.argv[1:] if args is None else args)
+    file_arguments = _non_ros_arguments(argv)
+    node_class = _build_node_class()
+
+    def factory(**kwargs: Any) -> Any:
+        return node_class(file_arguments, **kwargs)
+
+    return int(run_node(factory, argv))
+
+
+if __name__ == '__main__':
+    sys.exit(main())
