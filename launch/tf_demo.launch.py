@@ -1,0 +1,63 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The course demo: static base_link -> camera_link, moving odom -> base_link, and rviz2.
+
+    ros2 launch tf_demo tf_demo.launch.py [rviz:=false] [radius:=2.0]
+"""
+
+import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+from launch import LaunchDescription
+
+
+def generate_launch_description() -> LaunchDescription:
+    share = get_package_share_directory('tf_demo')
+    rviz_config = os.path.join(share, 'config', 'tf_demo.rviz')
+    return LaunchDescription(
+        [
+            DeclareLaunchArgument('rviz', default_value='true', description='Start rviz2'),
+            DeclareLaunchArgument(
+                'radius', default_value='1.0', description='Radius of the circle (m)'
+            ),
+            Node(
+                package='tf_demo',
+                executable='static_tf_pub',
+                name='static_tf_pub',
+                output='screen',
+            ),
+            Node(
+                package='tf_demo',
+                executable='dynamic_tf_pub',
+                name='dynamic_tf_pub',
+                output='screen',
+                parameters=[{'radius': LaunchConfiguration('radius')}],
+            ),
+            Node(
+                package='rviz2',
+                executable='rviz2',
+                name='rviz2',
+                arguments=['-d', rviz_config],
+                condition=IfCondition(LaunchConfiguration('rviz')),
+                output='screen',
+            ),
+        ]
+    )
