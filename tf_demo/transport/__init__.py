@@ -12,4 +12,212 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""tf_demo: a pure-Python tf2 for ROS 2 Jazzy and the standalone world."""
+"""
+The node API every executable is written against, on rclpy or on the standalone DDS backend.
+
+``init``, ``shutdown``, ``ok``, ``spin``, ``spin_once``, ``create_node``, ``Node`` and the
+executors come from the backend chosen by :func:`tf_demo.transport.backend.backend_name`
+(``TF_DEMO_BACKEND=rclpy|dds``, else rclpy when it imports, else DDS); the backend is imported
+on first use, so importing this package stays cheap. :func:`run_node` is the shared ``main()``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from collections.abc import Sequence
+import importlib
+import os
+import signal
+import sys
+import threading
+from types import FrameType
+from types import ModuleType
+from typing import Any
+
+from tf_demo.transport.backend import backend_name
+from tf_demo.transport.backend import BackendError
+from tf_demo.transport.backend import NodeConfigError
+from tf_demo.transport.ros_args import parse_ros_args
+from tf_demo.transport.ros_args import ROS_ARGS_USAGE
+from tf_demo.transport.ros_args import RosArgsError
+from tf_demo.transport.ros_args import set_global_ros_args
+
+__all__ = [
+    'BackendError',
+    'MultiThreadedExecutor',
+    'Node',
+    'NodeConfigError',
+    'ReentrantCallbackGroup',
+    'RosArgsError',
+    'SingleThreadedExecutor',
+    'backend_module',
+    'backend_name',
+    'create_node',
+    'init',
+    'ok',
+    'run_node',
+    'shutdown',
+    'spin',
+    'spin_once',
+]
+
+_BACKEND_MODULES = {
+    'rclpy': 'tf_demo.transport.rclpy_backend',
+    'dds': 'tf_demo.transport.dds_backend',
+}
+_REEXPORTED = frozenset(
+    {'Node', 'SingleThreadedExecutor', 'MultiThreadedExecutor', 'ReentrantCallbackGroup'}
+)
+
+
+def backend_module() -> ModuleType:
+    """Return the selected backend's module (imported on first use)."""
+    return importlib.import_module(_BACKEND_MODULES[backend_name()])
+
+
+def __getattr__(name: str) -> Any:
+    if name in _REEXPORTED:
+        module = backend_module()
+        if name == 'ReentrantCallbackGroup' and not hasattr(module, name):
+            msg = f'the {backend_name()} backend has no ReentrantCallbackGroup'
+            raise AttributeError(msg)
+        return getattr(module, name)
+    msg = f'module {__name__!r} has no attribute {name!r}'
+    raise AttributeError(msg)
+
+
+def init(args: Sequence[str] | None = None) -> None:
+    """
+    Initialise the backend with the process arguments (``sys.argv`` when None).
+
+    The ``--ros-args`` are parsed here first, so bad ones raise :class:`RosArgsError` with
+    rcl's text in both worlds; in the standalone world ``--log-level`` is applied here.
+    """
+    argv = list(sys.argv if args is None else args)
+    parsed = parse_ros_args(argv)
+    set_global_ros_args(parsed)
+    if backend_name() == 'dds':
+        from tf_demo.transport import logging as node_logging
+
+        for logger_name, level in parsed.log_levels:
+            if logger_name is None:
+                node_logging.set_default_logger_level(level)
+            else:
+                node_logging.set_logger_level(logger_name, level)
+    backend_module().init(args=argv)
+
+
+def shutdown() -> None:
+    """Shut the backend down (nodes and executors stop)."""
+    backend_module().shutdown()
+
+
+def ok() -> bool:
+    """Whether the backend is initialised and not shut down."""
+    return bool(backend_module().ok())
+
+
+def spin(node: Any, executor: Any = None) -> None:
+    """Run ``node``'s callbacks until shutdown."""
+    backend_module().spin(node, executor=executor)
+
+
+def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
+    """Run at most one of ``node``'s ready callbacks, waiting up to ``timeout_sec``."""
+    backend_module().spin_once(node, executor=executor, timeout_sec=timeout_sec)
+
+
+def create_node(node_name: str, **kwargs: Any) -> Any:
+    """Create a node of the selected backend (rclpy ``Node`` keyword arguments)."""
+    return backend_module().create_node(node_name, **kwargs)
+
+
+def _program_name(argv: Sequence[str]) -> str:
+    return os.path.basename(argv[0]) if argv and argv[0] and argv[0] != '-c' else 'tf_demo'
+
+
+def _config_error_types() -> tuple[type[BaseException], ...]:
+    """Exceptions from a node constructor that mean "bad configuration", not a bug."""
+    from tf_demo.transport.parameters import ParameterException
+
+    return (ValueError, OSError, ParameterException)
+
+
+class _StopRequest:
+    """Set by SIGINT/SIGTERM; a second SIGINT interrupts at once (KeyboardInterrupt)."""
+
+    def __init__(self) -> None:
+        self.event = threading.Event()
+        self.previous: dict[int, Any] = {}
+
+    def handle(self, signum: int, _frame: FrameType | None) -> None:
+        if self.event.is_set() and signum == signal.SIGINT:
+            raise KeyboardInterrupt
+        self.event.set()
+
+    def install(self) -> None:
+        if threading.current_thread() is not threading.main_thread():
+            return
+        for signum in (signal.SIGINT, signal.SIGTERM):
+            self.previous[signum] = signal.signal(signum, self.handle)
+
+    def restore(self) -> None:
+        for signum, handler in self.previous.items():
+            signal.signal(signum, handler)
+        self.previous.clear()
+
+
+def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> int:
+    """
+    Run one node as an executable's ``main()`` and return the exit code.
+
+    Parses ``--ros-args`` (bad ones: usage and a one-line error, exit 1), initialises the
+    backend, builds the node with ``factory()`` (a ``ValueError``, ``OSError`` or parameter
+    error from it — e.g. :class:`NodeConfigError` — prints one line and exits 1), spins until
+    Ctrl-C or SIGTERM, then destroys the node (its publishers flush) and shuts down: exit 0,
+    no traceback.
+    """
+    argv = list(sys.argv if args is None else args)
+    program = _program_name(argv)
+    try:
+        init(argv)
+    except (RosArgsError, BackendError) as error:
+        print(ROS_ARGS_USAGE.replace('<executable>', program), file=sys.stderr)
+        print(f'{program}: error: {error}', file=sys.stderr)
+        return 1
+    stop = _StopRequest()
+    stop.install()
+    node: Any = None
+    try:
+        try:
+            node = factory()
+        except _config_error_types() as error:
+            text = ' '.join(str(error).split()) or type(error).__name__
+            print(f'{program}: error: {text}', file=sys.stderr)
+            return 1
+        executor = backend_module().SingleThreadedExecutor()
+        executor.add_node(node)
+        while not stop.event.is_set() and ok():
+            executor.spin_once(timeout_sec=0.1)
+    except KeyboardInterrupt:
+        pass
+    except Exception as error:
+        if type(error).__name__ != 'ExternalShutdownException':
+            raise
+    finally:
+        stop.restore()
+        _finish(node)
+    return 0
+
+
+def _finish(node: Any) -> None:
+    """Destroy the node (flushing its publishers) and shut the backend down, quietly."""
+    try:
+        if node is not None:
+            node.destroy_node()
+    finally:
+        try:
+            if ok():
+                shutdown()
+        except Exception as error:  # a failed shutdown must not turn exit 0 into a traceback
+            print(f'warning: shutdown failed: {error}', file=sys.stderr)

@@ -84,3 +84,7 @@ def backend_name() -> BackendName:
 def is_rclpy() -> bool:
     """Whether this process runs on rclpy."""
     return backend_name() == 'rclpy'
+
+
+class NodeConfigError(ValueError):
+    """A node cannot start because of its configuration; ``run_node`` prints it on one line."""

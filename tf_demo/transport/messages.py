@@ -1,0 +1,54 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The message modules of the selected world, so node code is written once.
+
+``geometry_msgs.TransformStamped()`` is ``geometry_msgs.msg.TransformStamped`` under rclpy and
+``tf_demo.msgs.geometry_msgs.TransformStamped`` in the standalone world.
+"""
+
+from __future__ import annotations
+
+import importlib
+from types import ModuleType
+
+from tf_demo.transport.backend import backend_name
+
+__all__ = [
+    'builtin_interfaces',
+    'geometry_msgs',
+    'message_module',
+    'nav_msgs',
+    'rosgraph_msgs',
+    'sensor_msgs',
+    'std_msgs',
+    'tf2_msgs',
+]
+
+
+def message_module(package: str) -> ModuleType:
+    """Return the message module of ROS package ``package`` in the selected world."""
+    if backend_name() == 'rclpy':
+        return importlib.import_module(f'{package}.msg')
+    return importlib.import_module(f'tf_demo.msgs.{package}')
+
+
+builtin_interfaces = message_module('builtin_interfaces')
+geometry_msgs = message_module('geometry_msgs')
+nav_msgs = message_module('nav_msgs')
+rosgraph_msgs = message_module('rosgraph_msgs')
+sensor_msgs = message_module('sensor_msgs')
+std_msgs = message_module('std_msgs')
+tf2_msgs = message_module('tf2_msgs')
