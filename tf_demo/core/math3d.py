@@ -56,15 +56,18 @@ __all__ = [
     'Quat',
     'Vec3',
     'canonical_quat',
+    'canonical_quat_batch',
     'compose',
     'compose_batch',
     'homogeneous_from_transform',
     'invert',
     'matrix_from_quat',
+    'matrix_from_quat_batch',
     'matrix_from_rpy',
     'quat_conjugate',
     'quat_from_axis_angle',
     'quat_from_matrix',
+    'quat_from_matrix_batch',
     'quat_from_rpy',
     'quat_multiply',
     'quat_multiply_batch',
@@ -421,3 +424,67 @@ def slerp_batch(
     s1 = np.where(dot < 0, -s1, s1)
     out = (q0 * s0[:, None] + q1 * s1[:, None]) * d[:, None]
     return np.where(moving[:, None], out, q0)
+
+
+def matrix_from_quat_batch(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """Row-wise :func:`matrix_from_quat`: ``(N, 4)`` quaternions to ``(N, 3, 3)`` matrices."""
+    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    with np.errstate(divide='ignore', invalid='ignore'):
+        s = 2.0 / (x * x + y * y + z * z + w * w)
+    xs, ys, zs = x * s, y * s, z * s
+    wx, wy, wz = w * xs, w * ys, w * zs
+    xx, xy, xz = x * xs, x * ys, x * zs
+    yy, yz, zz = y * ys, y * zs, z * zs
+    out = np.empty((q.shape[0], 3, 3))
+    out[:, 0, 0] = 1.0 - (yy + zz)
+    out[:, 0, 1] = xy - wz
+    out[:, 0, 2] = xz + wy
+    out[:, 1, 0] = xy + wz
+    out[:, 1, 1] = 1.0 - (xx + zz)
+    out[:, 1, 2] = yz - wx
+    out[:, 2, 0] = xz - wy
+    out[:, 2, 1] = yz + wx
+    out[:, 2, 2] = 1.0 - (xx + yy)
+    return out
+
+
+def quat_from_matrix_batch(m: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """Row-wise :func:`quat_from_matrix`: ``(N, 3, 3)`` matrices to ``(N, 4)`` quaternions."""
+    count = m.shape[0]
+    out = np.empty((count, 4))
+    trace = m[:, 0, 0] + m[:, 1, 1] + m[:, 2, 2]
+    positive = trace > 0.0
+    largest = np.where(
+        m[:, 0, 0] < m[:, 1, 1],
+        np.where(m[:, 1, 1] < m[:, 2, 2], 2, 1),
+        np.where(m[:, 0, 0] < m[:, 2, 2], 2, 0),
+    )
+    with np.errstate(divide='ignore', invalid='ignore'):
+        rows = np.flatnonzero(positive)
+        if rows.size:
+            mm = m[rows]
+            s = np.sqrt(trace[rows] + 1.0)
+            out[rows, 3] = s * 0.5
+            s = 0.5 / s
+            out[rows, 0] = (mm[:, 2, 1] - mm[:, 1, 2]) * s
+            out[rows, 1] = (mm[:, 0, 2] - mm[:, 2, 0]) * s
+            out[rows, 2] = (mm[:, 1, 0] - mm[:, 0, 1]) * s
+        for i in range(3):
+            rows = np.flatnonzero(~positive & (largest == i))
+            if not rows.size:
+                continue
+            j = (i + 1) % 3
+            k = (i + 2) % 3
+            mm = m[rows]
+            s = np.sqrt(mm[:, i, i] - mm[:, j, j] - mm[:, k, k] + 1.0)
+            out[rows, i] = s * 0.5
+            s = 0.5 / s
+            out[rows, 3] = (mm[:, k, j] - mm[:, j, k]) * s
+            out[rows, j] = (mm[:, j, i] + mm[:, i, j]) * s
+            out[rows, k] = (mm[:, k, i] + mm[:, i, k]) * s
+    return out
+
+
+def canonical_quat_batch(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """Row-wise :func:`canonical_quat`."""
+    return quat_from_matrix_batch(matrix_from_quat_batch(q))
