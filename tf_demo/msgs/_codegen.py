@@ -1,0 +1,447 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Generate straight-line XCDR1 encoders and decoders for one message type (rosbags-style).
+
+The generated code inlines every nested message, merges consecutive primitives (and the
+padding between them, where it is known at generation time) into one precompiled
+:class:`struct.Struct` call, and aligns at run time only where the alignment depends on the
+length of a string or sequence. Alignment is relative to the first byte after the 4-byte
+encapsulation header, so buffers always include that header and positions start at 4.
+
+Generated code raises whatever the failing operation raises (``struct.error``,
+``IndexError``, ``UnicodeDecodeError``, :class:`Malformed`...); :mod:`tf_demo.msgs.cdr` turns that
+into a :class:`~tf_demo.msgs.cdr.CdrError` that names the field, using the reference codec.
+"""
+
+from __future__ import annotations
+
+from array import array
+from collections.abc import Callable
+from struct import Struct
+import sys
+from typing import Any
+from typing import Literal
+
+import numpy
+from tf_demo.msgs._message import message_class
+from tf_demo.msgs._schema import FieldSpec
+from tf_demo.msgs._schema import MessageSpec
+from tf_demo.msgs._schema import PRIMITIVES
+from tf_demo.msgs._schema import spec_for
+
+_MAX_ALIGN = 8
+#: Zero padding of 0..7 bytes, indexed by the pad length.
+ZEROS = tuple(bytes(n) for n in range(_MAX_ALIGN))
+
+Endian = Literal['<', '>']
+Encoder = Callable[[Any], bytes]
+Decoder = Callable[[bytes, int], tuple[Any, int]]
+
+
+class Malformed(Exception):  # noqa: N818 - internal signal, never leaves tf_demo.msgs
+    """Raised by generated decoders for violations struct cannot detect (missing NUL, counts)."""
+
+
+def _lowbit(value: int) -> int:
+    """Return the largest power of two (at most 8) that divides ``value``."""
+    return _MAX_ALIGN if value == 0 else min(_MAX_ALIGN, value & -value)
+
+
+def min_wire_size(msgtype: str) -> int:
+    """Return a lower bound of the encoded size of one ``msgtype``, for sequence count checks."""
+    total = 0
+    for field in spec_for(msgtype).fields:
+        if field.kind == 'sequence':
+            element = 0
+            total += 4
+        elif field.is_nested:
+            element = min_wire_size(field.base)
+        elif field.base == 'string':
+            element = 5
+        else:
+            element = PRIMITIVES[field.base].size
+        total += element * (field.size if field.kind == 'array' else 1)
+    return max(total, 1)
+
+
+def element_min_size(field: FieldSpec) -> int:
+    """Return a lower bound of the encoded size of one element of ``field``."""
+    if field.is_nested:
+        return min_wire_size(field.base)
+    if field.base == 'string':
+        return 5
+    return PRIMITIVES[field.base].size
+
+
+class _Builder:
+    """
+    Shared state of a code generator: lines, names, constants and the alignment knowledge.
+
+    ``known`` is the largest power of two that ``pos - 4`` (decoder) or ``len(out) - 4``
+    (encoder) is known to be a multiple of at the current point of the generated code, not
+    counting the pending run of primitives, which starts there and is ``run_size`` bytes long.
+    """
+
+    def __init__(self, endian: Endian) -> None:
+        self.endian: Endian = endian
+        self.lines: list[str] = []
+        self.namespace: dict[str, Any] = {
+            '_Malformed': Malformed,
+            '_array': array,
+            '_numpy': numpy,
+            '_ZEROS': ZEROS,
+            '_new': object.__new__,
+        }
+        self.indent = 1
+        self.counter = 0
+        self.known = _MAX_ALIGN
+        self.run_format: list[str] = []
+        self.run_items: list[str] = []
+        self.run_size = 0
+        self.structs: dict[str, str] = {}
+
+    def name(self, prefix: str) -> str:
+        """Return a fresh local variable name."""
+        self.counter += 1
+        return f'{prefix}{self.counter}'
+
+    def emit(self, line: str) -> None:
+        """Append one line at the current indentation."""
+        self.lines.append('    ' * self.indent + line)
+
+    def constant(self, prefix: str, value: Any) -> str:
+        """Bind ``value`` as a global of the generated module and return its name."""
+        name = self.name(f'_{prefix}')
+        self.namespace[name] = value
+        return name
+
+    def struct_method(self, fmt: str, method: str) -> str:
+        """Return the global name of ``Struct(endian + fmt).<method>``, compiled once."""
+        key = f'{fmt}.{method}'
+        if key not in self.structs:
+            self.structs[key] = self.constant('s', getattr(Struct(self.endian + fmt), method))
+        return self.structs[key]
+
+    def pad_run_to(self, alignment: int) -> bool:
+        """Pad the pending run to ``alignment`` if possible statically; say whether it was."""
+        if alignment > self.known:
+            return False
+        pad = -self.run_size % alignment
+        if pad:
+            self.run_format.append(f'{pad}x')
+            self.run_size += pad
+        return True
+
+    def settle(self) -> None:
+        """Account for the flushed run in the known alignment."""
+        self.known = min(self.known, _lowbit(self.run_size))
+        self.run_format, self.run_items, self.run_size = [], [], 0
+
+
+class _DecoderBuilder(_Builder):
+    """Generate ``decode(buf, pos) -> (message, pos)`` for one type and byte order."""
+
+    def __init__(self, endian: Endian) -> None:
+        super().__init__(endian)
+        self.builds: list[str] = []
+
+    def flush(self) -> None:
+        """Emit the pending run as one unpack, then the object constructions waiting for it."""
+        if self.run_items:
+            unpack = self.struct_method(''.join(self.run_format), 'unpack_from')
+            self.emit(f'{", ".join(self.run_items)}, = {unpack}(buf, pos)')
+        if self.run_size:
+            self.emit(f'pos += {self.run_size}')
+        self.settle()
+        for line in self.builds:
+            self.emit(line)
+        self.builds = []
+
+    def align(self, alignment: int) -> None:
+        """Make the next read start at a multiple of ``alignment``."""
+        if alignment == 1 or self.pad_run_to(alignment):
+            return
+        self.flush()
+        self.emit(f'pos += (4 - pos) & {alignment - 1}')
+        self.known = alignment
+
+    def primitive(self, base: str) -> str:
+        """Read one primitive into a new local; return its name."""
+        prim = PRIMITIVES[base]
+        self.align(prim.size)
+        var = self.name('v')
+        self.run_format.append(prim.code)
+        self.run_items.append(var)
+        self.run_size += prim.size
+        return var
+
+    def string(self) -> str:
+        """Read one string into a new local; return its name."""
+        length = self.primitive('uint32')
+        self.flush()
+        var = self.name('s')
+        end = self.name('e')
+        self.emit(f'{end} = pos + {length}')
+        self.emit(f'if not {length} or buf[{end} - 1]:')
+        self.emit('    raise _Malformed')
+        self.emit(f'{var} = buf[pos:{end} - 1].decode()')
+        self.emit(f'pos = {end}')
+        self.known = 1
+        return var
+
+    def value(self, field: FieldSpec) -> str:
+        """Read one element of ``field``'s type; return the local holding it."""
+        if field.is_nested:
+            return self.message(spec_for(field.base))
+        if field.base == 'string':
+            return self.string()
+        return self.primitive(field.base)
+
+    def loop(self, field: FieldSpec, count: str) -> str:
+        """Read ``count`` elements of ``field`` one by one into a list; return its name."""
+        result = self.name('l')
+        append = self.name('a')
+        self.flush()
+        self.emit(f'{result} = []')
+        self.emit(f'{append} = {result}.append')
+        entry = self.known
+        start = len(self.lines)
+        while True:
+            del self.lines[start:]
+            self.emit(f'for _ in range({count}):')
+            self.indent += 1
+            self.known = entry
+            element = self.value(field)
+            self.flush()
+            self.emit(f'{append}({element})')
+            self.indent -= 1
+            if self.known >= entry:
+                break
+            entry = self.known
+        self.known = min(self.known, entry)
+        return result
+
+    def numeric_sequence(self, field: FieldSpec, count: str) -> str:
+        """Read ``count`` numeric primitives into an ``array.array``; return its name."""
+        prim = PRIMITIVES[field.base]
+        var = self.name('q')
+        entry = self.known
+        self.emit(f'if {count}:')
+        self.indent += 1
+        if prim.size > entry:
+            self.emit(f'pos += (4 - pos) & {prim.size - 1}')
+        end = self.name('e')
+        self.emit(f'{end} = pos + {count} * {prim.size}')
+        self.emit(f'if {end} > len(buf):')
+        self.emit('    raise _Malformed')
+        self.emit(f'{var} = _array({prim.array_code!r}, buf[pos:{end}])')
+        if self.endian != ('<' if sys.byteorder == 'little' else '>') and prim.size > 1:
+            self.emit(f'{var}.byteswap()')
+        self.emit(f'pos = {end}')
+        self.indent -= 1
+        self.emit('else:')
+        self.emit(f'    {var} = _array({prim.array_code!r})')
+        self.known = min(entry, prim.size)
+        return var
+
+    def field_value(self, field: FieldSpec) -> str:
+        """Read the whole of ``field``; return the local holding its Python value."""
+        if field.kind == 'single':
+            return self.value(field)
+        if field.kind == 'sequence':
+            count = self.primitive('uint32')
+            self.flush()
+            minimum = element_min_size(field)
+            self.emit(f'if {count} * {minimum} > len(buf) - pos:')
+            self.emit('    raise _Malformed')
+            if field.base in PRIMITIVES and PRIMITIVES[field.base].array_code:
+                return self.numeric_sequence(field, count)
+            return self.loop(field, count)
+        if field.base in PRIMITIVES and PRIMITIVES[field.base].numpy_dtype:
+            prim = PRIMITIVES[field.base]
+            self.align(prim.size)
+            self.flush()
+            var = self.name('n')
+            dtype = numpy.dtype(prim.numpy_dtype).newbyteorder(self.endian)
+            dtype_name = self.constant('dt', dtype)
+            self.emit(
+                f'{var} = _numpy.frombuffer(buf, {dtype_name}, {field.size}, pos)'
+                f'.astype({prim.numpy_dtype!r})'
+            )
+            self.emit(f'pos += {field.size * prim.size}')
+            self.known = min(self.known, _lowbit(field.size * prim.size))
+            return var
+        return self.loop(field, str(field.size))
+
+    def message(self, spec: MessageSpec) -> str:
+        """Read one message of ``spec`` inline; return the local that will hold the object."""
+        values = [(field.name, self.field_value(field)) for field in spec.fields]
+        var = self.name('m')
+        cls = self.constant('C', message_class(spec.msgtype))
+        assignments = ''.join(f'; {var}.{name} = {value}' for name, value in values)
+        self.builds.append(f'{var} = _new({cls}){assignments}')
+        return var
+
+
+class _EncoderBuilder(_Builder):
+    """Generate ``encode(message) -> bytes`` (little-endian, with the encapsulation header)."""
+
+    def __init__(self) -> None:
+        super().__init__('<')
+
+    def flush(self) -> None:
+        """Emit the pending run as one pack appended to the output."""
+        if self.run_items:
+            pack = self.struct_method(''.join(self.run_format), 'pack')
+            self.emit(f'out += {pack}({", ".join(self.run_items)})')
+        elif self.run_size:
+            self.emit(f'out += _ZEROS[{self.run_size}]')
+        self.settle()
+
+    def align(self, alignment: int) -> None:
+        """Make the next write start at a multiple of ``alignment``."""
+        if alignment == 1 or self.pad_run_to(alignment):
+            return
+        self.flush()
+        self.emit(f'out += _ZEROS[(4 - len(out)) & {alignment - 1}]')
+        self.known = alignment
+
+    def primitive(self, base: str, expr: str) -> None:
+        """Write one primitive given by the Python expression ``expr``."""
+        prim = PRIMITIVES[base]
+        self.align(prim.size)
+        self.run_format.append(prim.code)
+        self.run_items.append(expr)
+        self.run_size += prim.size
+
+    def string(self, expr: str) -> None:
+        """Write one string."""
+        encoded = self.name('b')
+        self.emit(f'{encoded} = {expr}.encode()')
+        self.primitive('uint32', f'len({encoded}) + 1')
+        self.flush()
+        self.emit(f'out += {encoded}')
+        self.emit("out += b'\\x00'")
+        self.known = 1
+
+    def value(self, field: FieldSpec, expr: str) -> None:
+        """Write one element of ``field``'s type."""
+        if field.is_nested:
+            self.message(spec_for(field.base), expr)
+        elif field.base == 'string':
+            self.string(expr)
+        else:
+            self.primitive(field.base, expr)
+
+    def loop(self, field: FieldSpec, sequence: str) -> None:
+        """Write the elements of ``sequence`` one by one."""
+        self.flush()
+        element = self.name('x')
+        entry = self.known
+        start = len(self.lines)
+        while True:
+            del self.lines[start:]
+            self.emit(f'for {element} in {sequence}:')
+            self.indent += 1
+            self.known = entry
+            self.value(field, element)
+            self.flush()
+            self.emit('pass')
+            self.indent -= 1
+            if self.known >= entry:
+                break
+            entry = self.known
+        self.known = min(self.known, entry)
+
+    def field(self, field: FieldSpec, expr: str) -> None:
+        """Write the whole of ``field``, whose value is ``expr``."""
+        if field.kind == 'single':
+            self.value(field, expr)
+            return
+        if field.kind == 'array' and field.base in PRIMITIVES:
+            prim = PRIMITIVES[field.base]
+            self.align(prim.size)
+            self.run_format.append(f'{field.size}{prim.code}')
+            self.run_items.append(f'*{expr}')
+            self.run_size += field.size * prim.size
+            return
+        sequence = self.name('q')
+        self.emit(f'{sequence} = {expr}')
+        if field.kind == 'array':
+            self.emit(f'if len({sequence}) != {field.size}:')
+            self.emit('    raise _Malformed')
+            self.loop(field, sequence)
+            return
+        self.primitive('uint32', f'len({sequence})')
+        if field.base in PRIMITIVES:
+            prim = PRIMITIVES[field.base]
+            self.flush()
+            entry = self.known
+            self.emit(f'if len({sequence}):')
+            self.indent += 1
+            if prim.size > entry:
+                self.emit(f'out += _ZEROS[(4 - len(out)) & {prim.size - 1}]')
+            if prim.array_code:
+                swap = '' if sys.byteorder == 'little' or prim.size == 1 else '.byteswap()'
+                converted = self.name('r')
+                self.emit(f'{converted} = _array({prim.array_code!r}, {sequence}){swap}')
+                self.emit(f'out += {converted}.tobytes()')
+            else:
+                self.emit(f'out += bytes([1 if x else 0 for x in {sequence}])')
+            self.indent -= 1
+            self.known = min(entry, prim.size)
+            return
+        self.loop(field, sequence)
+
+    def message(self, spec: MessageSpec, expr: str) -> None:
+        """Write one message whose value is ``expr``."""
+        if spec.fields and not expr.isidentifier():
+            var = self.name('m')
+            self.emit(f'{var} = {expr}')
+            expr = var
+        for field in spec.fields:
+            self.field(field, f'{expr}.{field.name}')
+
+
+def _compile(builder: _Builder, header: str, footer: str, label: str) -> Any:
+    """Compile the generated body into a function and return it."""
+    source = '\n'.join([header, *builder.lines, footer])
+    code = compile(source, f'<tf_demo.msgs.cdr {label}>', 'exec')
+    exec(code, builder.namespace)
+    function = builder.namespace['generated']
+    function.source = source
+    return function
+
+
+def generate_decoder(msgtype: str, endian: Endian) -> Decoder:
+    """Generate the decoder of ``msgtype`` for ``endian`` (``'<'`` or ``'>'``)."""
+    builder = _DecoderBuilder(endian)
+    result = builder.message(spec_for(msgtype))
+    builder.flush()
+    decoder: Decoder = _compile(
+        builder, 'def generated(buf, pos):', f'    return {result}, pos', f'decode {msgtype}'
+    )
+    return decoder
+
+
+def generate_encoder(msgtype: str) -> Encoder:
+    """Generate the little-endian encoder of ``msgtype``, header included."""
+    builder = _EncoderBuilder()
+    builder.message(spec_for(msgtype), 'message')
+    builder.flush()
+    header = "def generated(message):\n    out = bytearray(b'\\x00\\x01\\x00\\x00')"
+    encoder: Encoder = _compile(builder, header, '    return bytes(out)', f'encode {msgtype}')
+    return encoder

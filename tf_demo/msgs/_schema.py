@@ -1,0 +1,253 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The one declarative table of ROS message definitions, and its parsed form.
+
+Every message class, every CDR codec and every RIHS01 type hash in :mod:`tf_demo.msgs` is
+generated from :data:`DEFINITIONS`. Each entry is the ``.msg`` text of ROS 2 Jazzy (fields only,
+comments and constants dropped), with ``;`` between fields. A field may carry a default as a
+Python literal after its name, e.g. ``float64 w 1.0``.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+import re
+from typing import Literal
+
+#: ``.msg`` definitions of ROS 2 Jazzy, one entry per type, in dependency order.
+DEFINITIONS: dict[str, str] = {
+    'builtin_interfaces/msg/Time': 'int32 sec; uint32 nanosec',
+    'builtin_interfaces/msg/Duration': 'int32 sec; uint32 nanosec',
+    'std_msgs/msg/Header': 'builtin_interfaces/Time stamp; string frame_id',
+    'std_msgs/msg/String': 'string data',
+    'geometry_msgs/msg/Vector3': 'float64 x; float64 y; float64 z',
+    'geometry_msgs/msg/Quaternion': 'float64 x 0.0; float64 y 0.0; float64 z 0.0; float64 w 1.0',
+    'geometry_msgs/msg/Point': 'float64 x; float64 y; float64 z',
+    'geometry_msgs/msg/Point32': 'float32 x; float32 y; float32 z',
+    'geometry_msgs/msg/Pose': 'Point position; Quaternion orientation',
+    'geometry_msgs/msg/Transform': 'Vector3 translation; Quaternion rotation',
+    'geometry_msgs/msg/TransformStamped': (
+        'std_msgs/Header header; string child_frame_id; Transform transform'
+    ),
+    'geometry_msgs/msg/PointStamped': 'std_msgs/Header header; Point point',
+    'geometry_msgs/msg/Vector3Stamped': 'std_msgs/Header header; Vector3 vector',
+    'geometry_msgs/msg/PoseStamped': 'std_msgs/Header header; Pose pose',
+    'geometry_msgs/msg/PoseWithCovariance': 'Pose pose; float64[36] covariance',
+    'geometry_msgs/msg/PoseWithCovarianceStamped': (
+        'std_msgs/Header header; PoseWithCovariance pose'
+    ),
+    'geometry_msgs/msg/Twist': 'Vector3 linear; Vector3 angular',
+    'geometry_msgs/msg/TwistWithCovariance': 'Twist twist; float64[36] covariance',
+    'geometry_msgs/msg/Polygon': 'Point32[] points',
+    'geometry_msgs/msg/PolygonStamped': 'std_msgs/Header header; Polygon polygon',
+    'nav_msgs/msg/Odometry': (
+        'std_msgs/Header header; string child_frame_id; '
+        'geometry_msgs/PoseWithCovariance pose; geometry_msgs/TwistWithCovariance twist'
+    ),
+    'sensor_msgs/msg/JointState': (
+        'std_msgs/Header header; string[] name; float64[] position; float64[] velocity; '
+        'float64[] effort'
+    ),
+    'tf2_msgs/msg/TFMessage': 'geometry_msgs/TransformStamped[] transforms',
+    'rosgraph_msgs/msg/Clock': 'builtin_interfaces/Time clock',
+    'rmw_dds_common/msg/Gid': 'char[16] data',
+    'rmw_dds_common/msg/NodeEntitiesInfo': (
+        'string<=256 node_namespace; string<=256 node_name; Gid[] reader_gid_seq; '
+        'Gid[] writer_gid_seq'
+    ),
+    'rmw_dds_common/msg/ParticipantEntitiesInfo': (
+        'Gid gid; NodeEntitiesInfo[] node_entities_info_seq'
+    ),
+}
+
+
+@dataclass(frozen=True)
+class Primitive:
+    """
+    How one ROS primitive type is named, laid out on the wire and held in Python.
+
+    :ivar idl: the rosidl (IDL) name, as rclpy and the type description use it.
+    :ivar code: the :mod:`struct` format character.
+    :ivar size: the wire size in bytes, which is also its CDR alignment.
+    :ivar array_code: the :mod:`array` typecode rclpy uses for a sequence of it ('' for a list).
+    :ivar numpy_dtype: the numpy dtype rclpy uses for a fixed array of it ('' for a list).
+    :ivar default: the Python default value.
+    """
+
+    idl: str
+    code: str
+    size: int
+    array_code: str
+    numpy_dtype: str
+    default: bool | int | float
+
+
+#: The ROS ``.msg`` primitive types (``byte`` and ``wstring`` are not supported).
+PRIMITIVES: dict[str, Primitive] = {
+    'bool': Primitive('boolean', '?', 1, '', '', False),
+    'int8': Primitive('int8', 'b', 1, 'b', 'int8', 0),
+    'uint8': Primitive('uint8', 'B', 1, 'B', 'uint8', 0),
+    'char': Primitive('uint8', 'B', 1, 'B', 'uint8', 0),
+    'int16': Primitive('int16', 'h', 2, 'h', 'int16', 0),
+    'uint16': Primitive('uint16', 'H', 2, 'H', 'uint16', 0),
+    'int32': Primitive('int32', 'i', 4, 'i', 'int32', 0),
+    'uint32': Primitive('uint32', 'I', 4, 'I', 'uint32', 0),
+    'int64': Primitive('int64', 'q', 8, 'q', 'int64', 0),
+    'uint64': Primitive('uint64', 'Q', 8, 'Q', 'uint64', 0),
+    'float32': Primitive('float', 'f', 4, 'f', 'float32', 0.0),
+    'float64': Primitive('double', 'd', 8, 'd', 'float64', 0.0),
+}
+
+Kind = Literal['single', 'sequence', 'array']
+
+
+@dataclass(frozen=True)
+class FieldSpec:
+    """
+    One field of a message.
+
+    :ivar name: the field name.
+    :ivar base: a primitive name from :data:`PRIMITIVES`, ``'string'``, or a nested message
+        type ``'pkg/msg/Name'``.
+    :ivar kind: ``'single'``, ``'sequence'`` (``T[]``, ``T[<=N]``) or ``'array'`` (``T[N]``).
+    :ivar size: the array length, the sequence bound, or 0.
+    :ivar string_bound: N of ``string<=N``, else 0.
+    :ivar default: the default of a primitive single field, or None for the type's default.
+    """
+
+    name: str
+    base: str
+    kind: Kind
+    size: int
+    string_bound: int
+    default: bool | int | float | str | None
+
+    @property
+    def is_nested(self) -> bool:
+        """Tell whether the element type is a message."""
+        return '/' in self.base
+
+
+@dataclass(frozen=True)
+class MessageSpec:
+    """
+    A parsed message definition.
+
+    :ivar msgtype: ``'pkg/msg/Name'``.
+    :ivar fields: the fields in wire order.
+    """
+
+    msgtype: str
+    fields: tuple[FieldSpec, ...]
+
+    @property
+    def package(self) -> str:
+        """Return the ROS package name."""
+        return self.msgtype.split('/', 1)[0]
+
+    @property
+    def name(self) -> str:
+        """Return the bare type name."""
+        return self.msgtype.rsplit('/', 1)[1]
+
+    @property
+    def dds_typename(self) -> str:
+        """Return the DDS type name rmw uses, ``pkg::msg::dds_::Name_``."""
+        return f'{self.package}::msg::dds_::{self.name}_'
+
+
+class SchemaError(ValueError):
+    """A message definition in the table is malformed."""
+
+
+_FIELD_RE = re.compile(
+    r'^(?P<base>[A-Za-z][\w/]*?)(?:<=(?P<strbound>\d+))?'
+    r'(?:\[(?P<le><=)?(?P<size>\d*)\])?\s+(?P<name>[a-z][a-z0-9_]*)(?:\s+(?P<default>.+))?$'
+)
+
+
+def _parse_field(package: str, text: str) -> FieldSpec:
+    """Parse one ``.msg`` field line of package ``package``."""
+    match = _FIELD_RE.match(text.strip())
+    if match is None:
+        msg = f'cannot parse field definition {text!r}'
+        raise SchemaError(msg)
+    base = match['base']
+    if base not in PRIMITIVES and base != 'string':
+        if base in ('byte', 'wstring'):
+            msg = f'field type {base!r} is not supported'
+            raise SchemaError(msg)
+        pkg, _, name = base.rpartition('/')
+        base = f'{pkg or package}/msg/{name}'
+    string_bound = int(match['strbound'] or 0)
+    if string_bound and base != 'string':
+        msg = f'only strings take a <=N bound: {text!r}'
+        raise SchemaError(msg)
+    kind: Kind = 'single'
+    size = 0
+    if match['size'] is not None:
+        kind = 'sequence' if match['le'] or not match['size'] else 'array'
+        size = int(match['size'] or 0)
+    default: bool | int | float | str | None = None
+    if match['default'] is not None:
+        default = ast.literal_eval(match['default'])
+    return FieldSpec(match['name'], base, kind, size, string_bound, default)
+
+
+def parse_definition(msgtype: str, text: str) -> MessageSpec:
+    """Parse the ``;``-separated ``.msg`` text of ``msgtype``."""
+    package = msgtype.split('/', 1)[0]
+    fields = tuple(_parse_field(package, part) for part in text.split(';') if part.strip())
+    return MessageSpec(msgtype, fields)
+
+
+#: Every message type of :data:`DEFINITIONS`, parsed.
+SPECS: dict[str, MessageSpec] = {
+    msgtype: parse_definition(msgtype, text) for msgtype, text in DEFINITIONS.items()
+}
+
+
+def spec_for(msgtype: str) -> MessageSpec:
+    """
+    Return the parsed definition of ``msgtype`` (``pkg/msg/Name`` or ``pkg/Name``).
+
+    :raises KeyError: the type is not in the table.
+    """
+    if msgtype.count('/') == 1:
+        pkg, name = msgtype.split('/')
+        msgtype = f'{pkg}/msg/{name}'
+    try:
+        return SPECS[msgtype]
+    except KeyError:
+        msg = f'unknown message type {msgtype!r}'
+        raise KeyError(msg) from None
+
+
+def rclpy_field_type(field: FieldSpec) -> str:
+    """Return the type string rclpy's ``get_fields_and_field_types()`` gives for ``field``."""
+    if field.is_nested:
+        pkg, _, name = field.base.split('/')
+        element = f'{pkg}/{name}'
+    elif field.base == 'string':
+        element = f'string<{field.string_bound}>' if field.string_bound else 'string'
+    else:
+        element = PRIMITIVES[field.base].idl
+    if field.kind == 'array':
+        return f'{element}[{field.size}]'
+    if field.kind == 'sequence':
+        return f'sequence<{element}, {field.size}>' if field.size else f'sequence<{element}>'
+    return element
