@@ -1,0 +1,235 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""DdsNode publishers and subscriptions in separate processes over real DDS on loopback."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+import queue
+import subprocess
+import sys
+import threading
+import time
+
+import pytest
+from tf_demo.msgs import cdr
+from tf_demo.msgs import rmw_dds_common
+from tf_demo.transport import dds_wire
+
+pytestmark = [pytest.mark.dds, pytest.mark.timeout(120)]
+
+HELPER = Path(__file__).with_name('dds_peer_node.py')
+
+
+class Peer:
+    """One helper process; its stdout and stderr lines are collected by reader threads."""
+
+    def __init__(self, env: dict[str, str], *args: str) -> None:
+        self.process = subprocess.Popen(
+            [sys.executable, str(HELPER), *args],
+            env=env,
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        self.lines: queue.Queue[str] = queue.Queue()
+        self.stdout: list[str] = []
+        self.stderr: list[str] = []
+        for stream, sink in (
+            (self.process.stdout, self.stdout),
+            (self.process.stderr, self.stderr),
+        ):
+            threading.Thread(target=self._pump, args=(stream, sink), daemon=True).start()
+
+    def _pump(self, stream: object, sink: list[str]) -> None:
+        for line in stream:  # type: ignore[attr-defined]
+            sink.append(line.rstrip('\n'))
+            self.lines.put(line.rstrip('\n'))
+
+    def wait_for_line(self, prefix: str, timeout: float = 30.0) -> str:
+        """Return the first output line (stdout or stderr) starting with ``prefix``."""
+        deadline = time.monotonic() + timeout
+        for line in list(self.stdout) + list(self.stderr):
+            if line.startswith(prefix):
+                return line
+        while time.monotonic() < deadline:
+            try:
+                line = self.lines.get(timeout=0.1)
+            except queue.Empty:
+                continue
+            if line.startswith(prefix):
+                return line
+        pytest.fail(f'no line starting with {prefix!r}; stdout={self.stdout} stderr={self.stderr}')
+
+    def finish(self, timeout: float = 30.0) -> int:
+        """Wait for the process to exit and return its exit code."""
+        code = self.process.wait(timeout=timeout)
+        time.sleep(0.05)  # let the pump threads drain the pipes
+        return code
+
+    def stop(self) -> None:
+        if self.process.poll() is None:
+            self.process.kill()
+        self.process.wait()
+
+
+@pytest.fixture
+def peers(dds_env: dict[str, str]) -> Iterator[list[Peer]]:
+    """Start helper processes on the test's private domain; kill leftovers at the end."""
+    started: list[Peer] = []
+    yield started
+    for peer in started:
+        peer.stop()
+
+
+def start(peers: list[Peer], env: dict[str, str], *args: str) -> Peer:
+    peer = Peer(env, *args)
+    peers.append(peer)
+    return peer
+
+
+def received_x(peer: Peer) -> list[float]:
+    return [float(line.split()[2]) for line in peer.stdout if line.startswith('msg ')]
+
+
+def test_reliable_delivery_at_1khz_loses_nothing(dds_env, peers):
+    """2,000 TFMessages published at 1 kHz with tf's QoS all arrive, in order."""
+    count = 2000
+    subscriber = start(peers, dds_env, 'sub', '--name', 'sink', '--count', str(count))
+    subscriber.wait_for_line('ready')
+    publisher = start(
+        peers, dds_env, 'pub', '--name', 'source', '--count', str(count), '--rate', '1000',
+        '--wait-subs', '1',
+    )  # fmt: skip
+    assert subscriber.finish() == 0
+    assert publisher.finish() == 0
+    assert subscriber.stdout[-1] == f'done {count}'
+    assert received_x(subscriber) == [float(i) for i in range(count)]
+
+
+def test_transient_local_late_joiner_gets_latched_message(dds_env, peers):
+    """A TRANSIENT_LOCAL subscription started after the publish still receives the message."""
+    publisher = start(
+        peers, dds_env, 'pub', '--topic', '/latched', '--frame', 'latched_frame',
+        '--durability', 'transient_local', '--depth', '1', '--hold', '30',
+    )  # fmt: skip
+    publisher.wait_for_line('sent 1')
+    subscriber = start(
+        peers, dds_env, 'sub', '--topic', '/latched', '--durability', 'transient_local',
+        '--count', '1', '--timeout', '20',
+    )  # fmt: skip
+    assert subscriber.finish() == 0
+    assert subscriber.stdout[-1] == 'done 1'
+    assert 'msg latched_frame 0' in subscriber.stdout
+
+
+def test_two_tf_static_publishers_both_reach_a_late_joiner(dds_env, peers):
+    """Two latched /tf_static publishers (depth 1 each) both reach a depth-100 late listener."""
+    for frame in ('static_a', 'static_b'):
+        publisher = start(
+            peers, dds_env, 'pub', '--name', f'pub_{frame}', '--topic', '/tf_static',
+            '--frame', frame, '--durability', 'transient_local', '--depth', '1', '--hold', '30',
+        )  # fmt: skip
+        publisher.wait_for_line('sent 1')
+    subscriber = start(
+        peers, dds_env, 'sub', '--topic', '/tf_static', '--durability', 'transient_local',
+        '--count', '2', '--timeout', '20',
+    )  # fmt: skip
+    assert subscriber.finish() == 0
+    assert sorted(line for line in subscriber.stdout if line.startswith('msg ')) == [
+        'msg static_a 0',
+        'msg static_b 0',
+    ]
+
+
+def test_incompatible_qos_warns_on_both_sides_and_delivers_nothing(dds_env, peers):
+    """A TRANSIENT_LOCAL subscription and a VOLATILE publisher warn like rclpy and never match."""
+    incompatible = start(
+        peers, dds_env, 'sub', '--name', 'strict', '--topic', '/x',
+        '--durability', 'transient_local', '--count', '1000000', '--timeout', '4',
+    )  # fmt: skip
+    compatible = start(
+        peers, dds_env, 'sub', '--name', 'lenient', '--topic', '/x', '--count', '1000000',
+        '--timeout', '4',
+    )  # fmt: skip
+    incompatible.wait_for_line('ready')
+    compatible.wait_for_line('ready')
+    publisher = start(
+        peers, dds_env, 'pub', '--name', 'talker', '--topic', '/x', '--count', '100',
+        '--rate', '50', '--wait-subs', '1',
+    )  # fmt: skip
+    assert publisher.finish() == 0
+    assert incompatible.finish() == 0
+    assert compatible.finish() == 0
+    subscription_warning = (
+        "[strict]: New publisher discovered on topic '/x', offering incompatible QoS. "
+        'No messages will be received from it. Last incompatible policy: DURABILITY'
+    )
+    publisher_warning = (
+        "[talker]: New subscription discovered on topic '/x', requesting incompatible QoS. "
+        'No messages will be sent to it. Last incompatible policy: DURABILITY'
+    )
+    assert any(subscription_warning in line for line in incompatible.stderr), incompatible.stderr
+    assert any(publisher_warning in line for line in publisher.stderr), publisher.stderr
+    assert incompatible.stdout[-1] == 'done 0'
+    assert compatible.stdout[-1] == 'done 100'
+
+
+@pytest.fixture
+def wire(dds_env: dict[str, str]) -> Iterator[dds_wire.DdsParticipant]:
+    """This test process' own DDS participant on the test's domain."""
+    participant = dds_wire.get_participant()
+    yield participant
+    dds_wire.close_participant()
+
+
+def test_ros_discovery_info_names_the_node_and_its_endpoints(dds_env, peers, wire):
+    """ros_discovery_info, decoded with our codec, lists the node with its writer's GID."""
+    start(
+        peers, dds_env, 'pub', '--name', 'graph_probe', '--topic', '/probe', '--hold', '30',
+    ).wait_for_line('sent 1')  # fmt: skip
+    reader = wire.create_reader(
+        dds_wire.DISCOVERY_INFO_TOPIC,
+        dds_wire.DISCOVERY_INFO_TYPE,
+        dds_wire.EndpointQos(reliable=True, transient_local=True, keep_all=True),
+        f'typehash={rmw_dds_common.ParticipantEntitiesInfo.__typehash__};'.encode(),
+    )
+    waitset = dds_wire.WaitSet(wire)
+    waitset.attach(reader.read_condition)
+    deadline = time.monotonic() + 20
+    infos: list[rmw_dds_common.ParticipantEntitiesInfo] = []
+    while time.monotonic() < deadline:
+        waitset.wait(200_000_000)
+        infos += [
+            cdr.deserialize(rmw_dds_common.ParticipantEntitiesInfo, p) for p in reader.take()
+        ]
+        if any(n.node_name == 'graph_probe' for i in infos for n in i.node_entities_info_seq):
+            break
+    waitset.close()
+    with_probe = [
+        i for i in infos if any(n.node_name == 'graph_probe' for n in i.node_entities_info_seq)
+    ]
+    assert with_probe, infos
+    (node,) = with_probe[-1].node_entities_info_seq
+    info = with_probe[-1]
+    assert (node.node_namespace, node.node_name) == ('/', 'graph_probe')
+    assert len(node.writer_gid_seq) == 1
+    assert node.reader_gid_seq == []
+    writer_gid = bytes(node.writer_gid_seq[0].data)
+    participant_gid = bytes(info.gid.data)
+    assert writer_gid[:12] == participant_gid[:12]
+    assert wire.count_endpoints('rt/probe', publications=True) == 1
