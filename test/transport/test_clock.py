@@ -1,0 +1,231 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Time, Duration and clocks follow rclpy's rules (rclpy/test/test_time.py, test_clock.py)."""
+
+import threading
+
+import pytest
+from tf_demo.msgs import builtin_interfaces
+from tf_demo.transport.clock import Clock
+from tf_demo.transport.clock import ClockChange
+from tf_demo.transport.clock import ClockType
+from tf_demo.transport.clock import Duration
+from tf_demo.transport.clock import Infinite
+from tf_demo.transport.clock import JumpThreshold
+from tf_demo.transport.clock import ROSClock
+from tf_demo.transport.clock import Time
+
+ROS = ClockType.ROS_TIME
+
+
+def test_time_holds_integer_nanoseconds_from_seconds_and_nanoseconds() -> None:
+    """Seconds (with fraction) and nanoseconds add up to integer nanoseconds."""
+    t = Time(seconds=1.5, nanoseconds=7, clock_type=ROS)
+    assert t.nanoseconds == 1_500_000_007
+    assert t.seconds_nanoseconds() == (1, 500_000_007)
+    assert t.clock_type is ROS
+    assert repr(t) == 'Time(nanoseconds=1500000007, clock_type=ROS_TIME)'
+
+
+def test_time_rejects_negative_values_and_int64_overflow() -> None:
+    """Negative seconds/nanoseconds raise ValueError; 2**63 ns raises OverflowError."""
+    with pytest.raises(ValueError, match='Seconds value must not be negative'):
+        Time(seconds=-1)
+    with pytest.raises(ValueError, match='Nanoseconds value must not be negative'):
+        Time(nanoseconds=-1)
+    with pytest.raises(OverflowError):
+        Time(nanoseconds=2**63)
+    assert Time(nanoseconds=2**63 - 1).nanoseconds == 2**63 - 1
+
+
+def test_time_requires_a_clock_type_enum() -> None:
+    """A clock type that is not a ClockType raises TypeError with rclpy's text."""
+    with pytest.raises(TypeError, match='Clock type must be a ClockType enum'):
+        Time(clock_type=1)  # type: ignore[arg-type]
+
+
+def test_time_arithmetic_with_durations() -> None:
+    """Time ± Duration is a Time of the same clock; Time - Time is a (signed) Duration."""
+    t = Time(seconds=10, clock_type=ROS)
+    assert (t + Duration(seconds=2)).nanoseconds == 12 * 10**9
+    assert (Duration(seconds=2) + t).clock_type is ROS
+    assert (t - Duration(seconds=3)).nanoseconds == 7 * 10**9
+    assert (Time(seconds=1, clock_type=ROS) - t) == Duration(seconds=-9)
+    with pytest.raises(ValueError, match='Subtraction leads to negative time'):
+        t - Duration(seconds=11)
+    with pytest.raises(OverflowError, match='Addition leads to overflow'):
+        Time(nanoseconds=2**63 - 1) + Duration(nanoseconds=1)
+
+
+def test_times_of_different_clock_types_do_not_mix() -> None:
+    """Comparing or subtracting times of different clock types raises TypeError."""
+    ros = Time(seconds=1, clock_type=ROS)
+    system = Time(seconds=1, clock_type=ClockType.SYSTEM_TIME)
+    with pytest.raises(TypeError, match="Can't compare times with different clock types"):
+        _ = ros == system
+    with pytest.raises(TypeError, match="Can't compare times with different clock types"):
+        _ = ros < system
+    with pytest.raises(TypeError, match="Can't subtract times with different clock types"):
+        _ = ros - system
+
+
+def test_time_and_duration_refuse_foreign_operands() -> None:
+    """Arithmetic with ints raises TypeError and equality with other types is False."""
+    with pytest.raises(TypeError):
+        _ = Time(seconds=1) + 1  # type: ignore[operator]
+    with pytest.raises(TypeError):
+        _ = Duration(seconds=1) < 1  # type: ignore[operator]
+    assert Duration(seconds=1) != 1_000_000_000
+    assert Time(seconds=1) != 1_000_000_000
+
+
+def test_duration_is_signed_and_bounded_to_int64() -> None:
+    """Durations may be negative; outside int64 they raise OverflowError."""
+    assert Duration(seconds=-1.5).nanoseconds == -1_500_000_000
+    with pytest.raises(OverflowError):
+        Duration(nanoseconds=2**63)
+    with pytest.raises(OverflowError):
+        Duration(nanoseconds=-(2**63) - 1)
+    assert Duration(nanoseconds=-(2**63)).nanoseconds == -(2**63)
+    assert str(Infinite) == 'Infinite'
+    assert Duration(seconds=2) * 3 == Duration(seconds=6)
+    assert Duration(seconds=2) * 0.25 == Duration(seconds=0.5)
+    assert Duration(seconds=1) * float('inf') == Infinite
+
+
+def test_messages_round_trip_with_divmod_semantics() -> None:
+    """to_msg uses divmod (negative durations keep 0 <= nanosec < 1e9); from_msg inverts it."""
+    msg = Duration(seconds=-1.5).to_msg()
+    assert (msg.sec, msg.nanosec) == (-2, 500_000_000)
+    assert Duration.from_msg(msg) == Duration(seconds=-1.5)
+    stamp = Time(seconds=3, nanoseconds=4, clock_type=ROS).to_msg()
+    assert isinstance(stamp, builtin_interfaces.Time)
+    assert (stamp.sec, stamp.nanosec) == (3, 4)
+    back = Time.from_msg(stamp)
+    assert back.clock_type is ROS
+    assert back == Time(seconds=3, nanoseconds=4, clock_type=ROS)
+    with pytest.raises(TypeError, match=r'Must pass a builtin_interfaces\.msg\.Time object'):
+        Time.from_msg(object())
+
+
+def test_clock_with_ros_time_type_is_a_ros_clock() -> None:
+    """Clock(clock_type=ROS_TIME) builds a ROSClock, as in rclpy."""
+    assert isinstance(Clock(clock_type=ROS), ROSClock)
+    assert isinstance(ROSClock(), ROSClock)
+    assert not isinstance(Clock(), ROSClock)
+    assert Clock(clock_type=ClockType.STEADY_TIME).now().clock_type is ClockType.STEADY_TIME
+
+
+def test_ros_clock_reports_the_override_only_while_ros_time_is_active() -> None:
+    """An inactive ROS clock reads system time; active, it reads the last override."""
+    clock = ROSClock()
+    clock.set_ros_time_override(Time(seconds=5, clock_type=ROS))
+    system_now = Clock().now().nanoseconds
+    assert clock.now().nanoseconds >= system_now
+    clock._set_ros_time_is_active(True)
+    assert clock.ros_time_is_active
+    assert clock.now() == Time(seconds=5, clock_type=ROS)
+    clock.set_ros_time_override(Time(seconds=7, clock_type=ROS))
+    assert clock.now() == Time(seconds=7, clock_type=ROS)
+    clock._set_ros_time_is_active(False)
+    assert clock.now().nanoseconds >= system_now
+
+
+def test_jump_callbacks_fire_as_rcl_fires_them() -> None:
+    """Activation fires on_clock_change callbacks; overrides fire past the thresholds only."""
+    clock = ROSClock()
+    changes: list = []
+    backward: list = []
+    pre_calls: list = []
+    clock.create_jump_callback(
+        JumpThreshold(min_forward=None, min_backward=None, on_clock_change=True),
+        post_callback=changes.append,
+    )
+    handle = clock.create_jump_callback(
+        JumpThreshold(min_forward=None, min_backward=Duration(seconds=-1), on_clock_change=False),
+        pre_callback=lambda: pre_calls.append(clock.now().nanoseconds),
+        post_callback=backward.append,
+    )
+    clock._set_ros_time_is_active(True)
+    clock.set_ros_time_override(Time(seconds=10, clock_type=ROS))
+    clock.set_ros_time_override(Time(seconds=9.5, clock_type=ROS))
+    clock.set_ros_time_override(Time(seconds=8, clock_type=ROS))
+    assert [jump.clock_change for jump in changes] == [ClockChange.ROS_TIME_ACTIVATED]
+    assert [jump.delta for jump in backward] == [Duration(seconds=-1.5)]
+    assert pre_calls == [9_500_000_000]  # the pre-callback sees the time before the jump
+    handle.unregister()
+    clock.set_ros_time_override(Time(seconds=1, clock_type=ROS))
+    assert len(backward) == 1
+    clock._set_ros_time_is_active(False)
+    assert changes[-1].clock_change is ClockChange.ROS_TIME_DEACTIVATED
+
+
+def test_jump_threshold_validates_its_limits() -> None:
+    """Thresholds must have the right sign and at least one must be enabled."""
+    with pytest.raises(ValueError, match='min_forward must be a positive'):
+        JumpThreshold(min_forward=Duration(), min_backward=None)
+    with pytest.raises(ValueError, match='min_backward must be a negative'):
+        JumpThreshold(min_forward=None, min_backward=Duration(seconds=1))
+    with pytest.raises(ValueError, match='At least one jump threshold'):
+        JumpThreshold(min_forward=None, min_backward=None, on_clock_change=False)
+
+
+def test_sleep_until_waits_for_sim_time_to_arrive() -> None:
+    """sleep_until on an active ROS clock returns once an override reaches the target."""
+    clock = ROSClock()
+    clock._set_ros_time_is_active(True)
+    clock.set_ros_time_override(Time(seconds=1, clock_type=ROS))
+    reached = threading.Event()
+    result: list[bool] = []
+
+    def sleeper() -> None:
+        result.append(clock.sleep_until(Time(seconds=3, clock_type=ROS)))
+        reached.set()
+
+    thread = threading.Thread(target=sleeper)
+    thread.start()
+    clock.set_ros_time_override(Time(seconds=2, clock_type=ROS))
+    assert not reached.wait(0.2)  # two simulated seconds are not enough
+    clock.set_ros_time_override(Time(seconds=3, clock_type=ROS))
+    thread.join(timeout=10)
+    assert result == [True]
+
+
+def test_sleep_until_returns_false_when_ros_time_is_deactivated() -> None:
+    """Deactivating ROS time ends a sim-time sleep with False, as rclpy documents."""
+    clock = ROSClock()
+    clock._set_ros_time_is_active(True)
+    result: list[bool] = []
+    thread = threading.Thread(
+        target=lambda: result.append(clock.sleep_until(Time(seconds=100, clock_type=ROS)))
+    )
+    thread.start()
+    clock._set_ros_time_is_active(False)
+    thread.join(timeout=10)
+    assert result == [False]
+
+
+def test_sleep_until_rejects_another_clock_type() -> None:
+    """A target time of another clock type raises TypeError."""
+    with pytest.raises(TypeError, match="until's clock type does not match"):
+        ROSClock().sleep_until(Time(seconds=1))
+
+
+def test_sleep_for_on_the_system_clock_reaches_its_target() -> None:
+    """sleep_for returns True after the clock has advanced by at least the duration."""
+    clock = Clock()
+    start = clock.now()
+    assert clock.sleep_for(Duration(seconds=0.05))
+    assert clock.now() - start >= Duration(seconds=0.05)

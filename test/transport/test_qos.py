@@ -1,0 +1,134 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""QoS profiles follow rclpy's construction rules, presets and tf2's profiles."""
+
+import pytest
+from tf_demo.transport.clock import Duration
+from tf_demo.transport.qos import DurabilityPolicy
+from tf_demo.transport.qos import DynamicBroadcasterQoS
+from tf_demo.transport.qos import DynamicListenerQoS
+from tf_demo.transport.qos import HistoryPolicy
+from tf_demo.transport.qos import InvalidQoSProfileException
+from tf_demo.transport.qos import LivelinessPolicy
+from tf_demo.transport.qos import qos_profile_sensor_data
+from tf_demo.transport.qos import qos_profile_system_default
+from tf_demo.transport.qos import QoSPresetProfiles
+from tf_demo.transport.qos import QoSProfile
+from tf_demo.transport.qos import ReliabilityPolicy
+from tf_demo.transport.qos import StaticBroadcasterQoS
+from tf_demo.transport.qos import StaticListenerQoS
+from tf_demo.transport.qos import validate_qos_or_depth
+
+
+def test_policy_values_match_rmw() -> None:
+    """The enum values are rmw/types.h's, so they map one to one onto the wire mapping."""
+    assert [HistoryPolicy.SYSTEM_DEFAULT, HistoryPolicy.KEEP_LAST, HistoryPolicy.KEEP_ALL] == [
+        0,
+        1,
+        2,
+    ]
+    assert ReliabilityPolicy.RELIABLE == 1
+    assert ReliabilityPolicy.BEST_EFFORT == 2
+    assert ReliabilityPolicy.BEST_AVAILABLE == 4
+    assert DurabilityPolicy.TRANSIENT_LOCAL == 1
+    assert DurabilityPolicy.VOLATILE == 2
+    assert LivelinessPolicy.AUTOMATIC == 1
+    assert LivelinessPolicy.MANUAL_BY_TOPIC == 3
+    assert ReliabilityPolicy.get_from_short_key('best_effort') == 2
+    assert DurabilityPolicy.TRANSIENT_LOCAL.short_key == 'transient_local'
+
+
+def test_depth_alone_means_keep_last_with_rmw_defaults() -> None:
+    """QoSProfile(depth=n) is KEEP_LAST n, RELIABLE, VOLATILE, durations unspecified."""
+    profile = QoSProfile(depth=7)
+    assert profile.history is HistoryPolicy.KEEP_LAST
+    assert profile.depth == 7
+    assert profile.reliability is ReliabilityPolicy.RELIABLE
+    assert profile.durability is DurabilityPolicy.VOLATILE
+    assert profile.deadline == Duration()
+    assert profile.lifespan == Duration()
+    assert profile.liveliness is LivelinessPolicy.SYSTEM_DEFAULT
+    assert profile.avoid_ros_namespace_conventions is False
+
+
+def test_history_or_depth_is_required() -> None:
+    """Without history and depth, or KEEP_LAST without depth, construction fails as in rclpy."""
+    with pytest.raises(InvalidQoSProfileException, match='History and/or depth'):
+        QoSProfile()
+    with pytest.raises(InvalidQoSProfileException, match='KEEP_LAST without a depth'):
+        QoSProfile(history=HistoryPolicy.KEEP_LAST)
+    assert QoSProfile(history=HistoryPolicy.KEEP_ALL).history is HistoryPolicy.KEEP_ALL
+
+
+def test_bad_fields_are_rejected_with_their_name() -> None:
+    """Unknown keywords, wrong types and negative depth name the problem."""
+    with pytest.raises(TypeError, match='Invalid arguments'):
+        QoSProfile(depth=1, reliabilty=ReliabilityPolicy.RELIABLE)
+    with pytest.raises(TypeError, match='deadline must be a Duration'):
+        QoSProfile(depth=1, deadline=1.0)
+    with pytest.raises(ValueError, match='greater than or equal to zero'):
+        QoSProfile(depth=-1)
+    with pytest.raises(ValueError):
+        QoSProfile(depth=1, reliability=9)
+
+
+def test_int_policies_become_enums_and_profiles_compare_by_value() -> None:
+    """Ints are accepted where rclpy accepts them; equal settings compare equal."""
+    profile = QoSProfile(depth=1, reliability=2, durability=1)
+    assert profile.reliability is ReliabilityPolicy.BEST_EFFORT
+    assert profile.durability is DurabilityPolicy.TRANSIENT_LOCAL
+    same = QoSProfile(
+        depth=1,
+        reliability=ReliabilityPolicy.BEST_EFFORT,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL,
+    )
+    assert profile == same
+    assert profile != QoSProfile(depth=2)
+
+
+def test_int_depth_is_accepted_where_rclpy_accepts_it() -> None:
+    """An int stands for QoSProfile(depth=n); other types raise rclpy's TypeError."""
+    assert validate_qos_or_depth(5) == QoSProfile(depth=5)
+    profile = QoSProfile(depth=3)
+    assert validate_qos_or_depth(profile) is profile
+    with pytest.raises(TypeError, match='Expected QoSProfile or int'):
+        validate_qos_or_depth('10')  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match='greater than or equal to zero'):
+        validate_qos_or_depth(-1)
+
+
+def test_presets_have_rmw_values() -> None:
+    """sensor_data is KEEP_LAST 5 BEST_EFFORT VOLATILE; system_default is all SYSTEM_DEFAULT."""
+    assert qos_profile_sensor_data.depth == 5
+    assert qos_profile_sensor_data.reliability is ReliabilityPolicy.BEST_EFFORT
+    assert qos_profile_system_default.history is HistoryPolicy.SYSTEM_DEFAULT
+    assert qos_profile_system_default.reliability is ReliabilityPolicy.SYSTEM_DEFAULT
+    assert QoSPresetProfiles.get_from_short_key('sensor_data') is qos_profile_sensor_data
+    assert QoSPresetProfiles.PARAMETERS.value.depth == 1000
+
+
+def test_tf2_profiles_match_tf2_ros_qos_hpp() -> None:
+    """/tf is KEEP_LAST 100 RELIABLE VOLATILE; /tf_static TRANSIENT_LOCAL depth 1 / 100."""
+    for profile in (DynamicBroadcasterQoS(), DynamicListenerQoS()):
+        assert (profile.history, profile.depth) == (HistoryPolicy.KEEP_LAST, 100)
+        assert profile.reliability is ReliabilityPolicy.RELIABLE
+        assert profile.durability is DurabilityPolicy.VOLATILE
+    assert StaticBroadcasterQoS().depth == 1
+    assert StaticListenerQoS().depth == 100
+    for profile in (StaticBroadcasterQoS(), StaticListenerQoS()):
+        assert profile.reliability is ReliabilityPolicy.RELIABLE
+        assert profile.durability is DurabilityPolicy.TRANSIENT_LOCAL
+    assert DynamicListenerQoS(10).depth == 10
+    assert DynamicBroadcasterQoS() is not DynamicBroadcasterQoS()

@@ -1,0 +1,232 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""--ros-args parsing as rcl does it, and how a real executable reports bad arguments."""
+
+import os
+from pathlib import Path
+import subprocess
+import sys
+
+import pytest
+from tf_demo.transport.logging import LoggingSeverity
+from tf_demo.transport.ros_args import expand_topic_name
+from tf_demo.transport.ros_args import parse_param_value
+from tf_demo.transport.ros_args import parse_ros_args
+from tf_demo.transport.ros_args import remove_ros_args
+from tf_demo.transport.ros_args import resolve_node_arguments
+from tf_demo.transport.ros_args import RosArgsError
+
+REPO_ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_user_arguments_outside_ros_args_are_kept_in_order() -> None:
+    """Arguments before --ros-args and after -- are the user's, unchanged."""
+    argv = [
+        'prog',
+        'a',
+        '--flag',
+        '--ros-args',
+        '-p',
+        'x:=1',
+        '--',
+        'b',
+        '--ros-args',
+        '-r',
+        'a:=b',
+    ]
+    parsed = parse_ros_args(argv)
+    assert parsed.user_args == ('prog', 'a', '--flag', 'b')
+    assert remove_ros_args(argv) == ['prog', 'a', '--flag', 'b']
+    assert len(parsed.remap_rules) == 1
+
+
+@pytest.mark.parametrize(
+    ('text', 'expected'),
+    [
+        ('true', True),
+        ('False', False),
+        ('42', 42),
+        ('-3', -3),
+        ('1.5', 1.5),
+        ('hello', 'hello'),
+        ("'42'", '42'),
+        ('[1, 2, 3]', [1, 2, 3]),
+        ('[1.0, 2.5]', [1.0, 2.5]),
+        ('[a, b]', ['a', 'b']),
+        ('[true, false]', [True, False]),
+        ('2020-01-01', '2020-01-01'),
+        ('/robot/base', '/robot/base'),
+    ],
+)
+def test_param_values_are_yaml_typed(text: str, expected: object) -> None:
+    """-p values get YAML types as rcl gives them (dates stay strings)."""
+    value = parse_param_value(text)
+    assert value == expected
+    assert type(value) is type(expected)
+
+
+def test_param_rules_can_name_a_node() -> None:
+    """-p node:name:=value applies only to that node; plain -p to every node."""
+    parsed = parse_ros_args(['--ros-args', '-p', 'talker:rate:=5.0', '--param', 'frame:=map'])
+    assert {n: p.value for n, p in parsed.parameter_overrides('/talker').items()} == {
+        'rate': 5.0,
+        'frame': 'map',
+    }
+    assert set(parsed.parameter_overrides('/listener')) == {'frame'}
+
+
+def test_node_name_and_namespace_remaps() -> None:
+    """__node:=, __name:= and __ns:= rename the node; node-prefixed rules target one node."""
+    resolved = resolve_node_arguments(
+        ['--ros-args', '-r', '__node:=renamed', '-r', '__ns:=/robot1'], 'talker', ''
+    )
+    assert (resolved.node_name, resolved.namespace) == ('renamed', '/robot1')
+    other = resolve_node_arguments(['--ros-args', '-r', 'talker:__name:=t2'], 'listener', '/x')
+    assert (other.node_name, other.namespace) == ('listener', '/x')
+    assert (
+        resolve_node_arguments(['--ros-args', '-r', 'talker:__name:=t2'], 'talker', '').node_name
+        == 't2'
+    )
+
+
+def test_topic_remaps_apply_to_expanded_names() -> None:
+    """from:=to matches after expansion (relative, ~) and the first matching rule wins."""
+    parsed = parse_ros_args(
+        ['--ros-args', '-r', 'tf:=/robot/tf', '-r', '/tf:=/other', '-r', '~/out:=/private']
+    )
+    assert parsed.remap_topic('/tf', 'node', '/') == '/robot/tf'
+    assert parsed.remap_topic('/ns/tf', 'node', '/ns') == '/robot/tf'
+    assert parsed.remap_topic('/ns/node/out', 'node', '/ns') == '/private'
+    assert parsed.remap_topic('/tf_static', 'node', '/') == '/tf_static'
+
+
+def test_topic_name_expansion_follows_rcl() -> None:
+    """Relative names join the namespace, ~ is the node's name, {node} is substituted."""
+    assert expand_topic_name('chatter', 'talker', '/') == '/chatter'
+    assert expand_topic_name('chatter', 'talker', '/ns') == '/ns/chatter'
+    assert expand_topic_name('~/state', 'talker', '/ns') == '/ns/talker/state'
+    assert expand_topic_name('{node}/out', 'talker', '/') == '/talker/out'
+    assert expand_topic_name('/abs', 'talker', '/ns') == '/abs'
+
+
+def test_log_level_rules() -> None:
+    """--log-level sets the default or one logger's level; the named rule wins for it."""
+    parsed = parse_ros_args(['--ros-args', '--log-level', 'warn', '--log-level', 'talker:=DEBUG'])
+    assert parsed.log_level_for('talker') is LoggingSeverity.DEBUG
+    assert parsed.log_level_for('listener') is LoggingSeverity.WARN
+    assert (
+        resolve_node_arguments(
+            ['--ros-args', '--log-level', 'ns.talker:=error'], 'talker', '/ns'
+        ).log_level
+        is LoggingSeverity.ERROR
+    )
+
+
+def test_params_file_wildcards_match_node_names(tmp_path: Path) -> None:
+    """/** matches everything, /ns/* one level, /*/name any namespace of one token."""
+    params = tmp_path / 'p.yaml'
+    params.write_text(
+        '/**:\n  ros__parameters:\n    a: 1\n'
+        '/ns/*:\n  ros__parameters:\n    b: 2\n'
+        '/*/talker:\n  ros__parameters:\n    c: 3\n'
+        'ns:\n  talker:\n    ros__parameters:\n      d: 4\n',
+        encoding='utf-8',
+    )
+    parsed = parse_ros_args(['--ros-args', '--params-file', str(params)])
+    assert set(parsed.parameter_overrides('/ns/talker')) == {'a', 'b', 'c', 'd'}
+    assert set(parsed.parameter_overrides('/talker')) == {'a'}
+    assert set(parsed.parameter_overrides('/other/talker')) == {'a', 'c'}
+
+
+@pytest.mark.parametrize(
+    ('argv', 'message'),
+    [
+        (['-p'], "Couldn't parse trailing -p flag. No parameter override rule found."),
+        (['--param', 'x'], "Couldn't parse parameter override rule: '--param x'. Error: "),
+        (['-p', 'x:=[1, a]'], 'Sequence should be of same type'),
+        (['-p', 'x:={a: 1}'], 'unsupported value'),
+        (['-p', 'bad name:=1'], "Invalid parameter name 'bad name'"),
+        (['-r'], "Couldn't parse trailing -r flag. No remap rule found."),
+        (['-r', 'a'], "Couldn't parse remap rule: '-r a'. Error: "),
+        (['-r', '__ns:=relative'], 'must be absolute'),
+        (['-r', '__node:=a/b'], "Invalid node name 'a/b'"),
+        (['-r', 'a:=b//c'], "must not contain repeated '/'"),
+        (['--params-file'], "Couldn't parse trailing --params-file flag. No file path provided."),
+        (['--params-file', '/nonexistent/p.yaml'], 'Error opening YAML file'),
+        (['--log-level'], "Couldn't parse trailing log level flag: '--log-level'."),
+        (['--log-level', 'loud'], "Unknown log severity 'loud'"),
+        (['-e', 'relative'], 'must be fully qualified'),
+        (['--unknown', 'x'], "Found unknown ROS arguments: ['--unknown', 'x']"),
+    ],
+)
+def test_bad_arguments_raise_rcl_style_errors(argv: list[str], message: str) -> None:
+    """Every malformed ROS argument raises RosArgsError naming the argument and the reason."""
+    with pytest.raises(RosArgsError) as caught:
+        parse_ros_args(['prog', '--ros-args', *argv])
+    assert message in str(caught.value)
+
+
+def test_malformed_params_file_names_the_problem(tmp_path: Path) -> None:
+    """A params file that is not rcl's schema is rejected with the offending key."""
+    params = tmp_path / 'bad.yaml'
+    params.write_text('talker:\n  rate: 1.0\n', encoding='utf-8')
+    with pytest.raises(RosArgsError, match="'talker/rate' is not a node name"):
+        parse_ros_args(['--ros-args', '--params-file', str(params)])
+    params.write_text('talker: [\n', encoding='utf-8')
+    with pytest.raises(RosArgsError, match='Error parsing YAML file at line'):
+        parse_ros_args(['--ros-args', '--params-file', str(params)])
+
+
+NODE_SCRIPT = """
+import sys
+from tf_demo.transport import run_node
+
+def never_built():
+    raise AssertionError('the node must not be built when the arguments are bad')
+
+sys.exit(run_node(never_built))
+"""
+
+
+@pytest.mark.parametrize(
+    ('ros_args', 'message'),
+    [
+        (['-p'], "Couldn't parse trailing -p flag"),
+        (['-r', '__ns:=oops'], "Couldn't parse remap rule: '-r __ns:=oops'"),
+        (['--bogus'], "Found unknown ROS arguments: ['--bogus']"),
+    ],
+)
+def test_executable_with_bad_arguments_exits_1_with_usage(
+    tmp_path: Path, ros_args: list[str], message: str
+) -> None:
+    """A real process prints usage and a one-line error, exits 1, and shows no traceback."""
+    script = tmp_path / 'node.py'
+    script.write_text(NODE_SCRIPT, encoding='utf-8')
+    env = dict(os.environ, PYTHONPATH=str(REPO_ROOT), TF_DEMO_BACKEND='dds')
+    completed = subprocess.run(
+        [sys.executable, str(script), '--ros-args', *ros_args],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert completed.returncode == 1
+    lines = completed.stderr.strip().splitlines()
+    assert lines[0].startswith('usage: node.py ')
+    assert len(lines) == 2
+    assert lines[1].startswith('node.py: error: ')
+    assert message in lines[1]
+    assert 'Traceback' not in completed.stderr
