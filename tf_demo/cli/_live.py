@@ -1,0 +1,208 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The imperative shell shared by the listening tools: record tf messages, build a buffer from them.
+
+:class:`TfRecorder` subscribes to ``/tf`` and ``/tf_static`` (tf2's listener QoS) on a node and
+records every message as a :class:`~tf_demo.cli._doctor.Observation`; :func:`listen` spins the
+node for a while; :func:`buffer_from_observations` replays the records into a ``BufferCore`` for
+the tools that print tf2's own dumps (view_frames, tf_saver, tf_monitor).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from collections.abc import Sequence
+import sys
+import threading
+import time
+from typing import Any
+
+from tf_demo.cli._doctor import Observation
+from tf_demo.cli._doctor import ObservedTransform
+from tf_demo.cli._doctor import TF_STATIC_TOPIC
+from tf_demo.cli._doctor import TF_TOPIC
+
+RECORDER_AUTHORITY = 'default_authority'
+MAX_OBSERVATIONS = 1_000_000
+
+
+class TfRecorder:
+    """Record every message received on ``/tf`` and ``/tf_static`` with its reception time."""
+
+    def __init__(
+        self,
+        node: Any,
+        *,
+        tf_topic: str = TF_TOPIC,
+        tf_static_topic: str = TF_STATIC_TOPIC,
+        on_message: Callable[[Observation], None] | None = None,
+    ) -> None:
+        from tf_demo.transport.messages import tf2_msgs
+        from tf_demo.transport.qos import DynamicListenerQoS
+        from tf_demo.transport.qos import StaticListenerQoS
+
+        self._clock = node.get_clock()
+        self._lock = threading.Lock()
+        self._observations: list[Observation] = []
+        self._on_message = on_message
+        self.dropped = 0
+        self._subscriptions = [
+            node.create_subscription(
+                tf2_msgs.TFMessage,
+                tf_topic,
+                lambda msg: self._record(TF_TOPIC, msg),
+                DynamicListenerQoS(),
+            ),
+            node.create_subscription(
+                tf2_msgs.TFMessage,
+                tf_static_topic,
+                lambda msg: self._record(TF_STATIC_TOPIC, msg),
+                StaticListenerQoS(),
+            ),
+        ]
+
+    def _record(self, topic: str, msg: Any) -> None:
+        from tf_demo.msgs.convert import transform_stamped_args
+
+        receive_ns = self._clock.now().nanoseconds
+        transforms = []
+        for transform in msg.transforms:
+            try:
+                parent, child, stamp_ns, translation, rotation = transform_stamped_args(transform)
+            except (TypeError, ValueError, AttributeError):
+                self.dropped += 1
+                continue
+            transforms.append(
+                ObservedTransform(
+                    str(parent),
+                    str(child),
+                    int(stamp_ns),
+                    (float(translation[0]), float(translation[1]), float(translation[2])),
+                    (
+                        float(rotation[0]),
+                        float(rotation[1]),
+                        float(rotation[2]),
+                        float(rotation[3]),
+                    ),
+                )
+            )
+        observation = Observation(topic, receive_ns, tuple(transforms))
+        with self._lock:
+            if len(self._observations) < MAX_OBSERVATIONS:
+                self._observations.append(observation)
+            else:
+                self.dropped += 1
+        if self._on_message is not None:
+            self._on_message(observation)
+
+    def observations(self) -> list[Observation]:
+        """Return a copy of everything recorded so far."""
+        with self._lock:
+            return list(self._observations)
+
+
+def listen(node: Any, seconds: float) -> None:
+    """Spin ``node`` for ``seconds`` of wall time (as view_frames does)."""
+    from tf_demo import transport
+
+    deadline = time.monotonic() + max(0.0, seconds)
+    while transport.ok():
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            break
+        transport.spin_once(node, timeout_sec=min(0.1, remaining))
+
+
+def buffer_from_observations(
+    observations: Sequence[Observation], cache_time_ns: int = 10**10
+) -> Any:
+    """Replay ``observations`` into a new ``BufferCore`` (rejected transforms are skipped)."""
+    from tf_demo.core.buffer_core import BufferCore
+
+    def quiet(level: int, text: str) -> None:
+        del level, text
+
+    core = BufferCore(cache_time_ns, log=quiet)
+    for observation in sorted(observations, key=lambda o: o.receive_ns):
+        is_static = observation.topic == TF_STATIC_TOPIC
+        for transform in observation.transforms:
+            core.set_transform(
+                transform.parent,
+                transform.child,
+                transform.stamp_ns,
+                transform.translation,
+                transform.rotation,
+                RECORDER_AUTHORITY,
+                is_static,
+            )
+    return core
+
+
+def print_error(tool: str, text: str) -> None:
+    """Print a one-line error for the user on stderr."""
+    print(f'{tool}: error: {text}', file=sys.stderr, flush=True)
+
+
+def log_unnamed(severity_name: str, text: str) -> None:
+    """Log like ``RCUTILS_LOG_<SEVERITY>`` without a logger name: ``[WARN] [t] []: text``."""
+    from tf_demo.transport.logging import format_log_line
+    from tf_demo.transport.logging import LoggingSeverity
+
+    line = format_log_line(LoggingSeverity[severity_name], '', text, time.time_ns())
+    print(line, file=sys.stderr, flush=True)
+
+
+class ToolError(Exception):
+    """A problem the tool reports as one line on stderr before exiting with code 1."""
+
+
+def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int:
+    """
+    Run ``body`` between ``transport.init`` and ``transport.shutdown``.
+
+    Ctrl-C and SIGTERM end the tool with exit code 0 (as a stopped ROS 2 tool), a
+    :class:`ToolError` prints one line and gives 1.
+    """
+    import signal
+
+    from tf_demo import transport
+    from tf_demo.transport.ros_args import ROS_ARGS_USAGE
+
+    def terminate(signum: int, frame: object) -> None:
+        del signum, frame
+        raise KeyboardInterrupt
+
+    try:
+        transport.init(args=[tool, *ros_args])
+    except (transport.RosArgsError, transport.BackendError) as error:
+        print(ROS_ARGS_USAGE.replace('<executable>', tool), file=sys.stderr)
+        print_error(tool, str(error))
+        return 1
+    previous = signal.signal(signal.SIGTERM, terminate)
+    try:
+        return body()
+    except KeyboardInterrupt:
+        return 0
+    except ToolError as error:
+        print_error(tool, str(error))
+        return 1
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+        try:
+            if transport.ok():
+                transport.shutdown()
+        except Exception:
+            pass

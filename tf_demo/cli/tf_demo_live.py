@@ -1,0 +1,211 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+``tf_demo_live``: the README's demo in one command, without ROS.
+
+Starts ``static_tf_pub``, ``dynamic_tf_pub`` and ``tf_listener`` as child processes on the same
+DDS domain, listens to TF itself and prints the live transform target <- source (default
+odom <- camera_link) until Ctrl-C or ``--duration`` seconds, then stops the children cleanly.
+
+    tf_demo_live [--duration S] [--rate HZ] [--target odom] [--source camera_link] [--quiet]
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+import math
+import os
+import signal
+import subprocess
+import sys
+import time
+from typing import Any
+
+from tf_demo.core.exceptions import TransformException
+from tf_demo.msgs.convert import transform_stamped_args
+
+DEMO_NODES = ('static_tf_pub', 'dynamic_tf_pub', 'tf_listener')
+CHILD_STOP_TIMEOUT_S = 5.0
+SPIN_SLICE_S = 0.1
+
+
+def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
+    """Parse the tool's own arguments (``--ros-args`` sections are removed before)."""
+    parser = argparse.ArgumentParser(
+        prog='tf_demo_live',
+        description='Run the tf_demo course demo (static, dynamic, listener) and print live '
+        'transforms until Ctrl-C or --duration.',
+    )
+    parser.add_argument('--duration', type=_non_negative, default=None, help='seconds, then stop')
+    parser.add_argument('--rate', type=_positive, default=2.0, help='print rate in Hz (2)')
+    parser.add_argument('--target', default='odom', help='target frame (odom)')
+    parser.add_argument('--source', default='camera_link', help='source frame (camera_link)')
+    parser.add_argument(
+        '--quiet', action='store_true', help="hide the child processes' own output"
+    )
+    return parser.parse_args(list(argv))
+
+
+def _positive(text: str) -> float:
+    value = _number(text)
+    if value <= 0.0:
+        msg = f'must be > 0, got {text}'
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def _non_negative(text: str) -> float:
+    value = _number(text)
+    if value < 0.0:
+        msg = f'must be >= 0, got {text}'
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def _number(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        msg = f'not a number: {text!r}'
+        raise argparse.ArgumentTypeError(msg) from None
+    if not math.isfinite(value):
+        msg = f'must be finite, got {text}'
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def format_live_transform(target: str, source: str, transform: Any) -> str:
+    """One printed line: stamp, translation and rotation (x, y, z, w) of source in target."""
+    _, _, stamp_ns, (x, y, z), (qx, qy, qz, qw) = transform_stamped_args(transform)
+    return (
+        f'{target} <- {source} @ {stamp_ns / 1e9:.3f}: '
+        f'translation [{x:+.3f}, {y:+.3f}, {z:+.3f}] '
+        f'rotation (xyzw) [{qx:+.3f}, {qy:+.3f}, {qz:+.3f}, {qw:+.3f}]'
+    )
+
+
+def format_waiting(target: str, source: str, reason: object) -> str:
+    """Return the line printed while the transform is not available yet."""
+    return f'{target} <- {source}: waiting ({reason})'
+
+
+def child_command(name: str) -> list[str]:
+    """Command line running one of the demo nodes with this interpreter."""
+    return [sys.executable, '-m', f'tf_demo.nodes.{name}']
+
+
+def start_children(quiet: bool) -> list[subprocess.Popen[bytes]]:
+    """Start the demo nodes (same environment, so the same ROS_DOMAIN_ID)."""
+    output = subprocess.DEVNULL if quiet else None
+    return [
+        subprocess.Popen(
+            child_command(name), stdin=subprocess.DEVNULL, stdout=output, stderr=output
+        )
+        for name in DEMO_NODES
+    ]
+
+
+def stop_children(children: list[subprocess.Popen[bytes]]) -> list[int]:
+    """SIGINT every child, wait up to 5 s each, kill the stragglers; return exit codes."""
+    for child in children:
+        if child.poll() is None:
+            child.send_signal(signal.SIGINT)
+    codes = []
+    for child in children:
+        try:
+            codes.append(child.wait(timeout=CHILD_STOP_TIMEOUT_S))
+        except subprocess.TimeoutExpired:
+            child.kill()
+            codes.append(child.wait())
+    return codes
+
+
+def _dead_child(children: list[subprocess.Popen[bytes]]) -> str | None:
+    for name, child in zip(DEMO_NODES, children, strict=True):
+        code = child.poll()
+        if code is not None:
+            return f'{name} exited with code {code}'
+    return None
+
+
+def run(options: argparse.Namespace, ros_args: list[str]) -> int:
+    """Start the children, print transforms until the deadline or Ctrl-C, stop everything."""
+    from tf_demo import transport
+    from tf_demo.ros.buffer import Buffer
+    from tf_demo.ros.transform_listener import TransformListener
+
+    children = start_children(options.quiet)
+    failure: str | None = None
+    transport.init(args=['tf_demo_live', *ros_args])
+    node = transport.create_node('tf_demo_live')
+    try:
+        tf_buffer = Buffer(node=node)
+        listener = TransformListener(tf_buffer, node)
+
+        def print_once() -> None:
+            try:
+                transform = tf_buffer.lookup_transform(options.target, options.source, 0)
+            except TransformException as error:
+                print(format_waiting(options.target, options.source, error), flush=True)
+                return
+            print(format_live_transform(options.target, options.source, transform), flush=True)
+
+        node.create_timer(1.0 / options.rate, print_once)
+        executor = transport.SingleThreadedExecutor()
+        executor.add_node(node)
+        deadline = None if options.duration is None else time.monotonic() + options.duration
+        while deadline is None or time.monotonic() < deadline:
+            executor.spin_once(timeout_sec=SPIN_SLICE_S)
+            failure = _dead_child(children)
+            if failure is not None:
+                break
+        listener.unregister()
+    except KeyboardInterrupt:
+        pass
+    finally:
+        stop_children(children)
+        node.destroy_node()
+        _shutdown(transport)
+    if failure is not None:
+        print(f'tf_demo_live: {failure}', file=sys.stderr)
+        return 1
+    return 0
+
+
+def _shutdown(transport: Any) -> None:
+    try_shutdown = getattr(transport, 'try_shutdown', None)
+    if try_shutdown is not None:
+        try_shutdown()
+    elif transport.ok():
+        transport.shutdown()
+
+
+def main(args: list[str] | None = None) -> int:
+    """Entry point: ``tf_demo_live [--duration S] [--rate HZ] [--target F] [--source F]``."""
+    from tf_demo.cli._args import split_ros_args
+
+    argv = list(sys.argv[1:] if args is None else args)
+    tool_args, ros_args = split_ros_args(argv)
+    options = parse_arguments(tool_args)
+    os.environ.setdefault('PYTHONUNBUFFERED', '1')
+    try:
+        return run(options, ros_args)
+    except KeyboardInterrupt:
+        return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

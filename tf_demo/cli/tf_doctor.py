@@ -1,0 +1,139 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+``tf_doctor``: listen to tf (or read a snapshot) and explain what is wrong, with the fix.
+
+Usage::
+
+    tf_doctor [-t SECONDS] [--frames A B ...] [--json]
+    tf_doctor --snapshot FILE [--frames A B ...] [--json]
+
+It reports frames that do not exist (with close matches), disconnected trees (each island and the
+likely missing link, such as odom→base_link), frames with two parents or publishers fighting, a
+frame on both /tf and /tf_static, stamps far in the future or past (clock or use_sim_time
+mismatch), data too sparse for lookups, loops and REP 105 order. Exit code 0 when healthy, 1 when
+problems were found, 2 for bad arguments. The analysis is :func:`tf_demo.cli._doctor.diagnose`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from tf_demo.cli._args import split_ros_args
+from tf_demo.cli._doctor import diagnose
+from tf_demo.cli._doctor import exit_code
+from tf_demo.cli._doctor import format_report
+from tf_demo.cli._doctor import format_report_json
+from tf_demo.cli._doctor import Observation
+from tf_demo.cli._doctor import observations_from_snapshot
+from tf_demo.cli._doctor import summarize
+from tf_demo.cli._live import listen
+from tf_demo.cli._live import print_error
+from tf_demo.cli._live import run_tool
+from tf_demo.cli._live import TfRecorder
+from tf_demo.cli._snapshot import read_snapshot
+from tf_demo.cli._snapshot import SnapshotError
+
+TOOL = 'tf_doctor'
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Return tf_doctor's argument parser."""
+    parser = argparse.ArgumentParser(
+        prog=TOOL,
+        description='Listen to /tf and /tf_static and explain tf problems in plain language.',
+    )
+    parser.add_argument(
+        '-t',
+        '--wait-time',
+        type=float,
+        default=3.0,
+        help='seconds to listen (default 3)',
+    )
+    parser.add_argument(
+        '--frames', nargs='+', default=[], metavar='FRAME', help='frames you need to use'
+    )
+    parser.add_argument('--snapshot', metavar='FILE', help='diagnose a tf_saver file instead')
+    parser.add_argument('--json', action='store_true', help='print one JSON object')
+    return parser
+
+
+def _report(
+    options: argparse.Namespace,
+    observations: list[Observation],
+    source: str,
+    *,
+    timing: bool,
+    listen_ns: int,
+) -> int:
+    findings = diagnose(
+        observations, listen_ns=listen_ns, frames=options.frames, check_timing=timing
+    )
+    summary = summarize(observations)
+    if options.json:
+        sys.stdout.write(format_report_json(findings, summary, source))
+    else:
+        sys.stdout.write(format_report(findings, summary, source))
+    sys.stdout.flush()
+    return exit_code(findings)
+
+
+def _listen_and_report(options: argparse.Namespace) -> int:
+    from tf_demo import transport
+
+    node = transport.create_node(TOOL)
+    try:
+        recorder = TfRecorder(node)
+        start = node.get_clock().now().nanoseconds
+        listen(node, options.wait_time)
+        listen_ns = node.get_clock().now().nanoseconds - start
+        return _report(
+            options,
+            recorder.observations(),
+            f'listened {options.wait_time:g} s',
+            timing=True,
+            listen_ns=listen_ns,
+        )
+    finally:
+        node.destroy_node()
+
+
+def main(args: list[str] | None = None) -> int:
+    """Run tf_doctor with ``args`` (default: ``sys.argv[1:]``)."""
+    argv = list(sys.argv[1:] if args is None else args)
+    tool_args, ros_args = split_ros_args(argv)
+    options = build_parser().parse_args(tool_args)
+    if not options.wait_time >= 0:
+        print_error(TOOL, f'--wait-time must be >= 0, got {options.wait_time}')
+        return 2
+    if options.snapshot is not None:
+        try:
+            snapshot = read_snapshot(options.snapshot)
+        except SnapshotError as error:
+            print_error(TOOL, str(error))
+            return 2
+        return _report(
+            options,
+            observations_from_snapshot(snapshot),
+            options.snapshot,
+            timing=False,
+            listen_ns=0,
+        )
+    return run_tool(TOOL, ros_args, lambda: _listen_and_report(options))
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,198 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+``tf_monitor [framea frameb]``: tf2_monitor's periodic report of delays and publishing rates.
+
+As tf2_ros' tf2_monitor (Jazzy): without arguments it watches all frames, with two it first waits
+for the chain from ``framea`` to ``frameb`` and reports its net delay too; other argument counts
+log ``TF_Monitor: usage: tf2_monitor framea frameb`` and exit with 255 (upstream's -1). Every 0.5
+s it looks the chain up; after 21 ticks it prints ``RESULTS``, the per-frame delays (now − stamp
+of every received transform, the last 1000 per frame) and the per-broadcaster rate, then starts
+again. Additions: ``--interval SECONDS`` (time between reports, default 10.5) and ``--limit N``
+(exit 0 after N reports).
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections import deque
+import sys
+import time
+from typing import Any
+
+from tf_demo.cli._args import split_ros_args
+from tf_demo.cli._doctor import Observation
+from tf_demo.cli._live import print_error
+from tf_demo.cli._live import RECORDER_AUTHORITY
+from tf_demo.cli._live import run_tool
+from tf_demo.cli._live import TfRecorder
+from tf_demo.cli.formatting import format_echo_waiting
+from tf_demo.cli.formatting import format_monitor_broadcasters
+from tf_demo.cli.formatting import format_monitor_frames
+from tf_demo.cli.formatting import format_monitor_header
+
+TOOL = 'tf2_monitor'
+NO_AUTHORITY = '<no authority available>'
+HISTORY = 1000
+TICK_S = 0.5
+TICKS_PER_REPORT = 21
+
+
+class DelayStats:
+    """Per-frame and per-broadcaster delay and arrival histories, as tf2_monitor keeps them."""
+
+    def __init__(self) -> None:
+        self.frame_delays: dict[str, deque[float]] = {}
+        self.frame_authority: dict[str, str] = {}
+        self.authority_delays: dict[str, deque[float]] = {}
+        self.authority_arrivals: dict[str, deque[float]] = {}
+
+    def add(self, observation: Observation, now_s: float) -> None:
+        """Record one message received at ``now_s``."""
+        authority = NO_AUTHORITY
+        total = 0.0
+        for t in observation.transforms:
+            offset = now_s - t.stamp_ns / 1e9
+            total += offset
+            self.frame_authority[t.child] = authority
+            self.frame_delays.setdefault(t.child, deque(maxlen=HISTORY)).append(offset)
+        average = total / max(1, len(observation.transforms))
+        self.authority_delays.setdefault(authority, deque(maxlen=HISTORY)).append(average)
+        self.authority_arrivals.setdefault(authority, deque(maxlen=HISTORY)).append(now_s)
+
+
+def _print_report(
+    frames: list[str], chain: list[str] | None, avg_diff: float, max_diff: float, stats: DelayStats
+) -> None:
+    """Print one report: RESULTS and frames on stdout, the broadcaster title on stderr."""
+    framea, frameb = frames if frames else (None, None)
+    sys.stdout.write(format_monitor_header(framea, frameb, chain, avg_diff, max_diff))
+    sys.stdout.write(format_monitor_frames(stats.frame_delays, stats.frame_authority, chain))
+    sys.stdout.flush()
+    sys.stderr.write('\nAll Broadcasters:\n')
+    sys.stderr.flush()
+    sys.stdout.write(format_monitor_broadcasters(stats.authority_delays, stats.authority_arrivals))
+    sys.stdout.flush()
+
+
+def _spin_for(node: Any, seconds: float) -> None:
+    from tf_demo import transport
+
+    deadline = time.monotonic() + seconds
+    while transport.ok():
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            return
+        transport.spin_once(node, timeout_sec=remaining)
+
+
+def _monitor(options: argparse.Namespace) -> int:
+    from tf_demo import transport
+    from tf_demo.core.buffer_core import BufferCore
+    from tf_demo.core.exceptions import TransformException
+
+    node = transport.create_node('tf2_monitor_main')
+    clock = node.get_clock()
+    stats = DelayStats()
+    core = BufferCore(log=lambda level, text: None)
+
+    def on_message(observation: Observation) -> None:
+        stats.add(observation, observation.receive_ns / 1e9)
+        for t in observation.transforms:
+            core.set_transform(
+                t.parent,
+                t.child,
+                t.stamp_ns,
+                t.translation,
+                t.rotation,
+                RECORDER_AUTHORITY,
+                observation.topic == '/tf_static',
+            )
+
+    try:
+        TfRecorder(node, on_message=on_message)
+        chain: list[str] | None = None
+        if options.frames:
+            framea, frameb = options.frames
+            last_log = -1.0
+            while transport.ok():
+                debug: Any = core.can_transform(framea, frameb, 0, return_debug_tuple=True)
+                ready, reason = debug
+                if ready:
+                    break
+                if time.monotonic() - last_log >= 1.0:
+                    last_log = time.monotonic()
+                    node.get_logger().info(format_echo_waiting(framea, frameb, reason))
+                _spin_for(node, TICK_S)
+            chain = core.chain(frameb, 0, framea, 0, frameb)
+            print(f'Gathering data on {framea} -> {frameb} for 10 seconds...', flush=True)
+        else:
+            print('Gathering data on all frames for 10 seconds...', flush=True)
+        avg_diff = max_diff = 0.0
+        reports = 0
+        ticks_per_report = max(1, round(options.interval / TICK_S))
+        counter = 0
+        while transport.ok():
+            counter += 1
+            if options.frames:
+                try:
+                    found = core.lookup_transform(options.frames[0], options.frames[1], 0)
+                except TransformException as error:
+                    node.get_logger().warning(f'Transform Exception {error}')
+                else:
+                    diff = clock.now().nanoseconds / 1e9 - found.stamp_ns / 1e9
+                    avg_diff = 0.01 * diff + 0.99 * avg_diff
+                    max_diff = max(max_diff, diff)
+            _spin_for(node, TICK_S)
+            if counter >= ticks_per_report:
+                counter = 0
+                _print_report(options.frames, chain, avg_diff, max_diff, stats)
+                reports += 1
+                if options.limit is not None and reports >= options.limit:
+                    return 0
+        return 0
+    finally:
+        node.destroy_node()
+
+
+def main(args: list[str] | None = None) -> int:
+    """Run tf_monitor with ``args`` (default: ``sys.argv[1:]``)."""
+    argv = list(sys.argv[1:] if args is None else args)
+    tool_args, ros_args = split_ros_args(argv)
+    parser = argparse.ArgumentParser(prog='tf_monitor', add_help=True)
+    parser.add_argument('frames', nargs='*')
+    parser.add_argument('--interval', type=float, default=TICK_S * TICKS_PER_REPORT)
+    parser.add_argument('--limit', type=int, default=None)
+    options = parser.parse_args(tool_args)
+    if len(options.frames) not in (0, 2):
+        from tf_demo.transport.logging import format_log_line
+        from tf_demo.transport.logging import LoggingSeverity
+
+        line = format_log_line(
+            LoggingSeverity.INFO,
+            '',
+            'TF_Monitor: usage: tf2_monitor framea frameb',
+            time.time_ns(),
+        )
+        print(line, file=sys.stderr, flush=True)
+        return 255
+    if not options.interval > 0 or (options.limit is not None and options.limit < 1):
+        print_error('tf_monitor', '--interval must be > 0 and --limit >= 1')
+        return 2
+    return run_tool(TOOL, ros_args, lambda: _monitor(options))
+
+
+if __name__ == '__main__':
+    sys.exit(main())
