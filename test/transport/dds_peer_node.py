@@ -17,8 +17,9 @@ A small DdsNode program the transport tests run as a separate process.
 
 ``pub``: publish TFMessages (one transform; child frame ``<frame>``, translation x = sequence
 number) from a timer, after ``--wait-subs`` subscriptions matched; then hold for ``--hold`` s.
-``sub``: print ``msg <child_frame_id> <x>`` per received transform and ``done <n>`` at the end
-(after ``--count`` transforms or ``--timeout`` s). Both print ``ready`` once set up.
+``sub``: print ``msg <child> <x> <parent> <y> <z> <qx> <qy> <qz> <qw>`` per received transform
+and ``done <n>`` at the end (after ``--count`` transforms or ``--timeout`` s). Both print
+``ready`` once set up.
 """
 
 from __future__ import annotations
@@ -93,7 +94,13 @@ def _subscribe(node: dds_backend.DdsNode, args: argparse.Namespace) -> int:
         nonlocal received
         for transform in msg.transforms:
             received += 1
-            _say(f'msg {transform.child_frame_id} {transform.transform.translation.x:g}')
+            translation = transform.transform.translation
+            rotation = transform.transform.rotation
+            _say(
+                f'msg {transform.child_frame_id} {translation.x:g} {transform.header.frame_id} '
+                f'{translation.y:g} {translation.z:g} '
+                f'{rotation.x:g} {rotation.y:g} {rotation.z:g} {rotation.w:g}'
+            )
 
     node.create_subscription(tf2_msgs.TFMessage, args.topic, on_message, _profile(args))
     _say('ready')
