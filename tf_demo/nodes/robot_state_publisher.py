@@ -252,7 +252,7 @@ def _build_node_class() -> type:
         durability=DurabilityPolicy.TRANSIENT_LOCAL,
     )
 
-    class RobotStatePublisher(Node):  # type: ignore[misc, valid-type]
+    class RobotStatePublisher(Node):  # type: ignore[misc]
         """The robot_state_publisher node (see the module docstring)."""
 
         def __init__(self, file_arguments: Sequence[str] = (), **kwargs: Any) -> None:
@@ -445,12 +445,12 @@ def main(args: Sequence[str] | None = None) -> int:
     """Run robot_state_publisher; return the process exit code."""
     from tf_demo.transport import run_node
 
-    argv = list(sys.argv[1:] if args is None else args)
-    file_arguments = _non_ros_arguments(argv)
+    argv = list(sys.argv if args is None else args)  # argv[0] is the program
+    file_arguments = _non_ros_arguments(argv[1:])
     node_class = _build_node_class()
 
-    def factory(**kwargs: Any) -> Any:
-        return node_class(file_arguments, **kwargs)
+    def factory() -> Any:
+        return node_class(file_arguments)
 
     return int(run_node(factory, argv))
 
