@@ -88,3 +88,16 @@ def is_rclpy() -> bool:
 
 class NodeConfigError(ValueError):
     """A node cannot start because of its configuration; ``run_node`` prints it on one line."""
+
+
+def rclpy_world() -> bool:
+    """
+    Whether module-level names should be rclpy's (a bad ``TF_DEMO_BACKEND`` counts as no).
+
+    Used at import time, where an error would become a traceback; the bad value is reported
+    cleanly when the backend is used (``init``/``run_node``).
+    """
+    try:
+        return backend_name() == 'rclpy'
+    except BackendError:
+        return False

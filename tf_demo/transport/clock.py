@@ -40,7 +40,7 @@ from typing import Protocol
 from typing import TYPE_CHECKING
 import weakref
 
-from tf_demo.transport.backend import backend_name
+from tf_demo.transport.backend import rclpy_world
 
 if TYPE_CHECKING:
     from tf_demo.transport.parameters import Parameter
@@ -741,7 +741,7 @@ class TimeSource:
         return SetParametersResult(successful=True)
 
 
-if backend_name() == 'rclpy':  # pragma: no cover - needs a ROS 2 installation
+if rclpy_world():  # pragma: no cover - needs a ROS 2 installation
     from tf_demo.transport import rclpy_backend as _rclpy_backend
 
     globals().update(_rclpy_backend.clock_exports())

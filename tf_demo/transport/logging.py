@@ -37,7 +37,7 @@ import time
 from typing import Any
 from typing import TextIO
 
-from tf_demo.transport.backend import backend_name
+from tf_demo.transport.backend import rclpy_world
 
 __all__ = [
     'DEFAULT_OUTPUT_FORMAT',
@@ -331,7 +331,7 @@ def get_logger(name: str) -> Logger:
     return Logger(name)
 
 
-if backend_name() == 'rclpy':  # pragma: no cover - needs a ROS 2 installation
+if rclpy_world():  # pragma: no cover - needs a ROS 2 installation
     from tf_demo.transport import rclpy_backend as _rclpy_backend
 
     globals().update(_rclpy_backend.logging_exports())

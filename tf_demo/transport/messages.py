@@ -24,7 +24,7 @@ from __future__ import annotations
 import importlib
 from types import ModuleType
 
-from tf_demo.transport.backend import backend_name
+from tf_demo.transport.backend import rclpy_world
 
 __all__ = [
     'builtin_interfaces',
@@ -40,7 +40,7 @@ __all__ = [
 
 def message_module(package: str) -> ModuleType:
     """Return the message module of ROS package ``package`` in the selected world."""
-    if backend_name() == 'rclpy':
+    if rclpy_world():
         return importlib.import_module(f'{package}.msg')
     return importlib.import_module(f'tf_demo.msgs.{package}')
 

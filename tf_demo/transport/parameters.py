@@ -36,7 +36,7 @@ from enum import Enum
 import threading
 from typing import Any
 
-from tf_demo.transport.backend import backend_name
+from tf_demo.transport.backend import rclpy_world
 
 __all__ = [
     'InvalidParameterException',
@@ -528,7 +528,7 @@ def _check_descriptor(
     return SetParametersResult(successful=False, reason=reason)
 
 
-if backend_name() == 'rclpy':  # pragma: no cover - needs a ROS 2 installation
+if rclpy_world():  # pragma: no cover - needs a ROS 2 installation
     from tf_demo.transport import rclpy_backend as _rclpy_backend
 
     globals().update(_rclpy_backend.parameter_exports())

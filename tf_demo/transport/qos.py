@@ -31,7 +31,7 @@ from enum import Enum
 from enum import IntEnum
 from typing import Any
 
-from tf_demo.transport.backend import backend_name
+from tf_demo.transport.backend import rclpy_world
 from tf_demo.transport.clock import Duration
 
 __all__ = [
@@ -432,7 +432,7 @@ def StaticListenerQoS(depth: int = 100) -> QoSProfile:  # noqa: N802 - tf2_ros's
     )
 
 
-if backend_name() == 'rclpy':  # pragma: no cover - needs a ROS 2 installation
+if rclpy_world():  # pragma: no cover - needs a ROS 2 installation
     from tf_demo.transport import rclpy_backend as _rclpy_backend
 
     globals().update(_rclpy_backend.qos_exports())

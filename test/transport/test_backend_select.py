@@ -1,0 +1,121 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Backend selection: TF_DEMO_BACKEND, else rclpy when it imports, else DDS (in subprocesses)."""
+
+import os
+from pathlib import Path
+import subprocess
+import sys
+
+import pytest
+from tf_demo.transport.backend import BackendError
+from tf_demo.transport.backend import choose_backend
+
+REPO_ROOT = Path(__file__).resolve().parents[2]
+
+PROBE = (
+    'import sys; import tf_demo.transport as t; '
+    'print(t.backend_name()); '
+    "print('rclpy' in sys.modules, 'cyclonedds' in sys.modules)"
+)
+
+
+def run_probe(code: str, backend: str | None, extra_path: Path | None = None):
+    env = dict(os.environ)
+    env.pop('TF_DEMO_BACKEND', None)
+    if backend is not None:
+        env['TF_DEMO_BACKEND'] = backend
+    paths = [str(REPO_ROOT)] + ([str(extra_path)] if extra_path else [])
+    env['PYTHONPATH'] = os.pathsep.join(paths)
+    return subprocess.run(
+        [sys.executable, '-c', code],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+
+
+def test_choose_backend_rules() -> None:
+    """An explicit choice wins; otherwise rclpy if importable; unknown names are errors."""
+    assert choose_backend('dds', rclpy_importable=True) == 'dds'
+    assert choose_backend('rclpy', rclpy_importable=True) == 'rclpy'
+    assert choose_backend(' RCLPY ', rclpy_importable=True) == 'rclpy'
+    assert choose_backend(None, rclpy_importable=True) == 'rclpy'
+    assert choose_backend('', rclpy_importable=False) == 'dds'
+    with pytest.raises(BackendError, match='rclpy cannot be imported'):
+        choose_backend('rclpy', rclpy_importable=False)
+    with pytest.raises(BackendError, match="TF_DEMO_BACKEND='zenoh' is not a known backend"):
+        choose_backend('zenoh', rclpy_importable=True)
+
+
+def test_explicit_dds_selects_dds_and_imports_neither_middleware_eagerly() -> None:
+    """TF_DEMO_BACKEND=dds picks DDS; importing the package loads neither rclpy nor cyclonedds."""
+    completed = run_probe(PROBE, 'dds')
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.split() == ['dds', 'False', 'False']
+
+
+def test_without_rclpy_the_default_is_dds() -> None:
+    """With no TF_DEMO_BACKEND and no rclpy installed, the DDS backend is chosen."""
+    completed = run_probe(PROBE, None)
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.split()[0] == 'dds'
+
+
+def test_a_broken_rclpy_counts_as_absent(tmp_path: Path) -> None:
+    """An rclpy that fails to import (e.g. built for another Python) falls back to DDS."""
+    broken = tmp_path / 'rclpy'
+    broken.mkdir()
+    (broken / '__init__.py').write_text(
+        "raise ImportError('rclpy built for another Python')\n", encoding='utf-8'
+    )
+    completed = run_probe(PROBE, None, extra_path=tmp_path)
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.split()[0] == 'dds'
+
+
+def test_requesting_rclpy_without_it_is_a_clear_error() -> None:
+    """TF_DEMO_BACKEND=rclpy without rclpy raises BackendError naming the fix."""
+    completed = run_probe(PROBE, 'rclpy')
+    assert completed.returncode != 0
+    assert 'BackendError: TF_DEMO_BACKEND=rclpy but rclpy cannot be imported' in completed.stderr
+
+
+def test_dds_world_node_api_comes_from_the_dds_backend() -> None:
+    """In the DDS world Node, executors and message modules are the standalone ones."""
+    code = (
+        'import tf_demo.transport as t; from tf_demo.transport import messages as m; '
+        'print(t.Node.__module__, t.SingleThreadedExecutor.__module__, '
+        'm.geometry_msgs.__name__, m.tf2_msgs.TFMessage.__msgtype__)'
+    )
+    completed = run_probe(code, 'dds')
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.split() == [
+        'tf_demo.transport.dds_backend',
+        'tf_demo.transport.dds_backend',
+        'tf_demo.msgs.geometry_msgs',
+        'tf2_msgs/msg/TFMessage',
+    ]
+
+
+def test_run_node_reports_a_bad_backend_choice_without_traceback() -> None:
+    """run_node with an unknown TF_DEMO_BACKEND exits 1 with a one-line error."""
+    code = 'import sys; from tf_demo.transport import run_node; sys.exit(run_node(object, ["x"]))'
+    completed = run_probe(code, 'zenoh')
+    assert completed.returncode == 1
+    assert "x: error: TF_DEMO_BACKEND='zenoh' is not a known backend" in completed.stderr
+    assert 'Traceback' not in completed.stderr
