@@ -1,0 +1,341 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Buffer: tf2_ros's API over the real core, event-driven waits on real (sim) clocks."""
+
+from __future__ import annotations
+
+import copy
+import threading
+
+import pytest
+from tf_demo.core.exceptions import ExtrapolationException
+from tf_demo.core.exceptions import ForwardExtrapolationException
+from tf_demo.core.exceptions import LookupException
+from tf_demo.core.exceptions import TimeoutException
+from tf_demo.msgs import builtin_interfaces
+from tf_demo.msgs import geometry_msgs
+from tf_demo.ros import Buffer
+from tf_demo.ros import TypeException
+from tf_demo.transport.clock import Duration
+from tf_demo.transport.clock import ROSClock
+from tf_demo.transport.clock import Time
+
+S = 1_000_000_000
+HANG_GUARD_S = 10.0
+
+
+def transform_msg(
+    parent: str,
+    child: str,
+    stamp_ns: int,
+    translation: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    rotation: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 1.0),
+) -> geometry_msgs.TransformStamped:
+    t = geometry_msgs.TransformStamped()
+    t.header.frame_id = parent
+    t.header.stamp.sec, t.header.stamp.nanosec = divmod(stamp_ns, S)
+    t.child_frame_id = child
+    tr, q = t.transform.translation, t.transform.rotation
+    tr.x, tr.y, tr.z = translation
+    q.x, q.y, q.z, q.w = rotation
+    return t
+
+
+def sim_clock(start_s: float) -> ROSClock:
+    clock = ROSClock()
+    clock._set_ros_time_is_active(True)
+    clock.set_ros_time_override(Time(seconds=start_s))
+    return clock
+
+
+def in_thread(target: object) -> tuple[threading.Thread, dict[str, object]]:
+    """Run ``target()`` in a thread; its result or exception lands in the returned dict."""
+    box: dict[str, object] = {}
+
+    def run() -> None:
+        try:
+            box['result'] = target()  # type: ignore[operator]
+        except Exception as error:
+            box['error'] = error
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    return thread, box
+
+
+def test_lookup_returns_the_worlds_transform_stamped() -> None:
+    """lookup_transform gives a geometry_msgs TransformStamped with target/source and stamp."""
+    buffer = Buffer()
+    buffer.set_transform(transform_msg('a', 'b', 2 * S, (1.0, 0.0, 0.0), (1.0, 0, 0, 0)), 'x')
+    out = buffer.lookup_transform('a', 'b', Time(seconds=2), Duration(seconds=2))
+    assert type(out) is geometry_msgs.TransformStamped
+    assert (out.header.frame_id, out.child_frame_id) == ('a', 'b')
+    assert (out.header.stamp.sec, out.header.stamp.nanosec) == (2, 0)
+    assert out.transform.translation.x == 1.0
+    assert out.transform.rotation.x == 1.0
+
+
+def test_time_arguments_accept_time_message_and_int_ns() -> None:
+    """Times may be rclpy-style Time, a builtin_interfaces Time message or int nanoseconds."""
+    buffer = Buffer()
+    buffer.set_transform(transform_msg('a', 'b', 1 * S, (1.0, 0.0, 0.0)), 'x')
+    buffer.set_transform(transform_msg('a', 'b', 3 * S, (3.0, 0.0, 0.0)), 'x')
+    as_msg = builtin_interfaces.Time(sec=2, nanosec=0)
+    for when in (Time(seconds=2), as_msg, 2 * S):
+        assert buffer.lookup_transform('a', 'b', when).transform.translation.x == 2.0
+
+
+def test_bad_time_type_raises_tf2_py_type_error() -> None:
+    """Anything without nanoseconds or sec/nanosec is refused with tf2_py's text."""
+    buffer = Buffer()
+    with pytest.raises(TypeError, match=r'time must have sec and nanosec, or nanoseconds\.'):
+        buffer.lookup_transform('a', 'b', 1.5)
+    with pytest.raises(TypeError, match=r'duration must have sec and nanosec, or nanoseconds\.'):
+        buffer.can_transform('a', 'b', 0, 'soon')
+
+
+def test_can_transform_debug_tuple_and_core_names() -> None:
+    """can_transform(return_debug_tuple=True) and can_transform_core give (bool, text)."""
+    buffer = Buffer()
+    ok, text = buffer.can_transform('a', 'b', 0, return_debug_tuple=True)
+    assert ok is False
+    assert text == (
+        'Invalid frame ID "a" passed to canTransform argument target_frame - frame does not exist'
+    )
+    assert buffer.can_transform_core('a', 'b', 0) == (ok, text)
+
+
+def test_set_transform_reports_rejection_and_static_survives_clear() -> None:
+    """A NaN transform is rejected (False); clear() drops dynamic data and keeps statics."""
+    buffer = Buffer()
+    assert buffer.set_transform(transform_msg('a', 'b', S, (float('nan'), 0.0, 0.0)), 'x') is False
+    assert buffer.set_transform_static(transform_msg('a', 's', 0, (0.0, 1.0, 0.0)), 'x') is True
+    assert buffer.set_transform(transform_msg('a', 'd', S), 'x') is True
+    buffer.clear()
+    assert buffer.lookup_transform('a', 's', 0).transform.translation.y == 1.0
+    assert not buffer.can_transform('a', 'd', S)
+
+
+def test_lookup_full_and_latest_common_time() -> None:
+    """lookup_transform_full travels through a fixed frame; get_latest_common_time is a Time."""
+    buffer = Buffer()
+    buffer.set_transform(transform_msg('odom', 'base', 1 * S, (1.0, 0.0, 0.0)), 'x')
+    buffer.set_transform(transform_msg('odom', 'base', 2 * S, (3.0, 0.0, 0.0)), 'x')
+    out = buffer.lookup_transform_full('base', 2 * S, 'base', 1 * S, 'odom')
+    assert out.transform.translation.x == pytest.approx(-2.0)
+    assert buffer.get_latest_common_time('odom', 'base').nanoseconds == 2 * S
+
+
+def test_blocking_wait_is_resolved_by_data_inserted_after_it_started() -> None:
+    """A wait with a long timeout returns True once another thread inserts the transform."""
+    buffer = Buffer()
+    started = threading.Event()
+
+    def wait() -> object:
+        started.set()
+        return buffer.can_transform('a', 'b', 0, Duration(seconds=HANG_GUARD_S * 3))
+
+    thread, box = in_thread(wait)
+    assert started.wait(HANG_GUARD_S)
+    assert not buffer.can_transform('a', 'b', 0)
+    buffer.set_transform(transform_msg('a', 'b', S), 'x')
+    thread.join(HANG_GUARD_S)
+    assert box == {'result': True}
+
+
+def test_blocking_timeout_is_measured_on_the_sim_clock() -> None:
+    """With a paused sim clock the wait keeps waiting; once /clock passes the timeout it fails."""
+    clock = sim_clock(100.0)
+    buffer = Buffer(clock=clock)
+    thread, box = in_thread(lambda: buffer.lookup_transform('a', 'b', 0, Duration(seconds=2)))
+    clock.set_ros_time_override(Time(seconds=101.0))
+    thread.join(0.3)
+    assert thread.is_alive(), 'the wait ended before 2 s of sim time passed'
+    clock.set_ros_time_override(Time(seconds=102.5))
+    thread.join(HANG_GUARD_S)
+    assert not thread.is_alive()
+    assert isinstance(box.get('error'), LookupException)
+
+
+def test_wait_in_the_only_feeder_thread_returns_at_once() -> None:
+    """A thread that delivers /tf itself cannot receive data while it waits: no deadlock."""
+    clock = sim_clock(5.0)
+    buffer = Buffer(clock=clock)
+
+    def feeder_waits() -> object:
+        buffer.note_feeder_thread()
+        return buffer.can_transform('a', 'b', 0, Duration(seconds=1000))
+
+    thread, box = in_thread(feeder_waits)
+    thread.join(HANG_GUARD_S)
+    assert box == {'result': False}
+
+
+def test_dedicated_thread_makes_the_feeder_wait_block_again() -> None:
+    """With set_using_dedicated_thread(True) the same wait blocks until data arrives."""
+    buffer = Buffer()
+    buffer.set_using_dedicated_thread(True)
+    started = threading.Event()
+
+    def feeder_waits() -> object:
+        buffer.note_feeder_thread()
+        started.set()
+        return buffer.can_transform('a', 'b', 0, Duration(seconds=HANG_GUARD_S * 3))
+
+    thread, box = in_thread(feeder_waits)
+    assert started.wait(HANG_GUARD_S)
+    buffer.set_transform(transform_msg('a', 'b', S), 'x')
+    thread.join(HANG_GUARD_S)
+    assert box == {'result': True}
+
+
+def test_async_wait_resolves_to_the_transform_when_data_arrives() -> None:
+    """wait_for_transform_async's future resolves to the TransformStamped after an insert."""
+    buffer = Buffer()
+    future = buffer.wait_for_transform_async('a', 'b', 0)
+    assert not future.done()
+    buffer.set_transform(transform_msg('a', 'b', S, (4.0, 0.0, 0.0)), 'x')
+    assert future.done()
+    assert future.result().transform.translation.x == 4.0
+
+
+def test_async_lookup_coroutine_driven_by_hand() -> None:
+    """lookup_transform_async (upstream's test pattern): send(None), insert, StopIteration."""
+    buffer = Buffer()
+    coro = buffer.lookup_transform_async('a', 'b', Time(seconds=3))
+    coro.send(None)
+    buffer.set_transform(transform_msg('a', 'b', 3 * S, (0.0, 5.0, 0.0)), 'x')
+    with pytest.raises(StopIteration) as stop:
+        coro.send(None)
+    assert stop.value.value.transform.translation.y == 5.0
+
+
+def test_async_timeout_raises_timeout_exception_on_sim_time() -> None:
+    """An awaitable wait with a timeout fails with TimeoutException once sim time passes it."""
+    clock = sim_clock(50.0)
+    buffer = Buffer(clock=clock)
+    future = buffer.wait_for_transform_async('a', 'b', 0, timeout=Duration(seconds=1))
+    clock.set_ros_time_override(Time(seconds=50.5))
+    assert not future.wait(0.3)
+    clock.set_ros_time_override(Time(seconds=51.5))
+    assert future.wait(HANG_GUARD_S)
+    assert isinstance(future.exception(), TimeoutException)
+    with pytest.raises(TimeoutException, match=r'from \[b\] to \[a\]'):
+        future.result()
+
+
+def test_async_wall_clock_timeout() -> None:
+    """Without a node the system clock measures the async timeout."""
+    buffer = Buffer()
+    future = buffer.wait_for_transform_async('a', 'b', 0, timeout=Duration(seconds=0.2))
+    assert future.wait(HANG_GUARD_S)
+    assert isinstance(future.exception(), TimeoutException)
+
+
+def test_async_full_wait_resolves() -> None:
+    """wait_for_transform_full_async resolves once both times are available."""
+    buffer = Buffer()
+    buffer.set_transform(transform_msg('odom', 'base', 1 * S, (1.0, 0.0, 0.0)), 'x')
+    future = buffer.wait_for_transform_full_async('base', 2 * S, 'base', 1 * S, 'odom')
+    assert not future.done()
+    buffer.set_transform(transform_msg('odom', 'base', 2 * S, (3.0, 0.0, 0.0)), 'x')
+    assert future.result().transform.translation.x == pytest.approx(-2.0)
+
+
+def test_backward_time_jump_clears_dynamic_keeps_static() -> None:
+    """A /clock jump back by 5 s clears the buffer except static transforms."""
+    clock = sim_clock(100.0)
+    buffer = Buffer(clock=clock)
+    buffer.set_transform(transform_msg('a', 'd', 99 * S), 'x')
+    buffer.set_transform_static(transform_msg('a', 's', 0), 'x')
+    clock.set_ros_time_override(Time(seconds=100.5))
+    assert buffer.can_transform('a', 'd', 99 * S)
+    clock.set_ros_time_override(Time(seconds=95.0))
+    assert not buffer.can_transform('a', 'd', 99 * S)
+    assert buffer.can_transform('a', 's', 0)
+
+
+def upstream_buffer() -> Buffer:
+    """Upstream test_tf2_geometry_msgs setup: a -> b is t=(1,0,0), x-flip, at 2 s."""
+    buffer = Buffer()
+    buffer.set_transform(transform_msg('a', 'b', 2 * S, (1.0, 0.0, 0.0), (1.0, 0, 0, 0)), 'x')
+    return buffer
+
+
+def stamped(msg: object, frame: str = 'a') -> object:
+    msg.header.frame_id = frame  # type: ignore[attr-defined]
+    msg.header.stamp.sec = 2  # type: ignore[attr-defined]
+    return msg
+
+
+def test_transform_point_upstream_vector() -> None:
+    """Upstream: PointStamped (1,2,3) in a, transformed to b, is (0,-2,-3); input unchanged."""
+    point = stamped(geometry_msgs.PointStamped())
+    point.point.x, point.point.y, point.point.z = 1.0, 2.0, 3.0
+    before = copy.deepcopy(point)
+    out = upstream_buffer().transform(point, 'b', new_type=geometry_msgs.PointStamped)
+    assert (out.point.x, out.point.y, out.point.z) == (0.0, -2.0, -3.0)
+    assert out.header.frame_id == 'b'
+    assert point == before
+
+
+def test_transform_pose_and_pose_with_covariance_upstream_vectors() -> None:
+    """Upstream: poses at (1,2,3) with an x-flip map to (0,-2,-3) in b."""
+    buffer = upstream_buffer()
+    pose = stamped(geometry_msgs.PoseStamped())
+    pose.pose.position.x, pose.pose.position.y, pose.pose.position.z = 1.0, 2.0, 3.0
+    pose.pose.orientation = geometry_msgs.Quaternion(x=1.0, y=0.0, z=0.0, w=0.0)
+    out = buffer.transform(pose, 'b')
+    assert (out.pose.position.x, out.pose.position.y, out.pose.position.z) == (0, -2, -3)
+    with_cov = stamped(geometry_msgs.PoseWithCovarianceStamped())
+    with_cov.pose.pose = copy.deepcopy(pose.pose)
+    out_cov = buffer.transform(with_cov, 'b')
+    position = out_cov.pose.pose.position
+    assert (position.x, position.y, position.z) == (0, -2, -3)
+
+
+def test_transform_vector3_and_polygon() -> None:
+    """Vector3Stamped is rotated only; PolygonStamped points are moved as points."""
+    buffer = upstream_buffer()
+    vector = stamped(geometry_msgs.Vector3Stamped())
+    vector.vector.x, vector.vector.y, vector.vector.z = 1.0, 2.0, 3.0
+    out = buffer.transform(vector, 'b')
+    assert (out.vector.x, out.vector.y, out.vector.z) == pytest.approx((1.0, -2.0, -3.0))
+    polygon = stamped(geometry_msgs.PolygonStamped())
+    polygon.polygon.points = [geometry_msgs.Point32(x=1.0, y=2.0, z=3.0)]
+    out_polygon = buffer.transform(polygon, 'b')
+    point = out_polygon.polygon.points[0]
+    assert (point.x, point.y, point.z) == pytest.approx((0.0, -2.0, -3.0))
+
+
+def test_transform_full_and_unsupported_type() -> None:
+    """transform_full works through a fixed frame; an unknown type raises TypeException."""
+    buffer = upstream_buffer()
+    point = stamped(geometry_msgs.PointStamped())
+    point.point.x = 1.0
+    out = buffer.transform_full(point, 'b', 2 * S, 'a')
+    assert out.point.x == pytest.approx(0.0)
+    with pytest.raises(TypeException, match='is not loaded or supported'):
+        buffer.transform(stamped(geometry_msgs.TransformStamped()), 'b')
+
+
+def test_extrapolation_subclasses_are_exposed() -> None:
+    """Python code can tell a future extrapolation from other errors (a tf_demo extra)."""
+    buffer = upstream_buffer()
+    buffer.set_transform(transform_msg('a', 'b', 3 * S), 'x')
+    with pytest.raises(ForwardExtrapolationException, match='extrapolation into the future'):
+        buffer.lookup_transform('a', 'b', 5 * S)
+    with pytest.raises(ExtrapolationException, match='extrapolation into the past'):
+        buffer.lookup_transform('a', 'b', 1 * S)

@@ -1,0 +1,145 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Small helpers shared by the tutorial nodes: typed parameters, rotations, message building.
+
+Parameters are declared with ``dynamic_typing`` so that ``-p x:=1`` (an integer) is accepted where
+a float is expected, which rclpy otherwise rejects; values are then checked here with one-line
+errors (:class:`NodeConfigError`) that name the parameter.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+import math
+from typing import Any
+
+from tf_demo.core.math3d import quat_from_rpy
+from tf_demo.msgs.convert import fill_transform_stamped
+from tf_demo.transport.backend import NodeConfigError
+
+Vec3 = tuple[float, float, float]
+Quat = tuple[float, float, float, float]
+
+
+def declare_flexible(node: Any, name: str, default: Any) -> Any:
+    """Declare ``name`` with ``default`` and dynamic typing; return its value."""
+    from tf_demo.transport.parameters import ParameterDescriptor
+
+    descriptor = ParameterDescriptor(dynamic_typing=True)
+    return node.declare_parameter(name, default, descriptor).value
+
+
+def as_float(name: str, value: Any) -> float:
+    """Return ``value`` as a finite float, or raise a one-line error naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        msg = f'parameter {name!r} must be a number, got {value!r}'
+        raise NodeConfigError(msg)
+    number = float(value)
+    if not math.isfinite(number):
+        msg = f'parameter {name!r} must be finite, got {value!r}'
+        raise NodeConfigError(msg)
+    return number
+
+
+def as_positive_float(name: str, value: Any) -> float:
+    """Return ``value`` as a float > 0, or raise a one-line error naming ``name``."""
+    number = as_float(name, value)
+    if number <= 0.0:
+        msg = f'parameter {name!r} must be > 0, got {value!r}'
+        raise NodeConfigError(msg)
+    return number
+
+
+def as_frame(name: str, value: Any) -> str:
+    """Return a valid tf2 frame id (non-empty, no leading '/'), or raise naming ``name``."""
+    if not isinstance(value, str) or not value.strip():
+        msg = f'parameter {name!r} must be a non-empty frame id, got {value!r}'
+        raise NodeConfigError(msg)
+    if value.startswith('/'):
+        msg = f"parameter {name!r}: tf2 frame ids cannot start with '/', got {value!r}"
+        raise NodeConfigError(msg)
+    return value
+
+
+def as_vector3(name: str, value: Any) -> Vec3:
+    """Return three finite floats, or raise a one-line error naming ``name``."""
+    values = _number_list(name, value)
+    if len(values) != 3:
+        msg = f'{name} must be 3 numbers [x, y, z], got {_show(value)}'
+        raise NodeConfigError(msg)
+    return values[0], values[1], values[2]
+
+
+def rotation_from_values(name: str, value: Any) -> Quat:
+    """
+    Return a unit quaternion (x, y, z, w) from 3 numbers (roll, pitch, yaw) or 4 (x, y, z, w).
+
+    :raises NodeConfigError: for another count or a zero quaternion.
+    """
+    values = _number_list(name, value)
+    if len(values) == 3:
+        return quat_from_rpy(values[0], values[1], values[2])
+    if len(values) == 4:
+        norm = math.sqrt(sum(v * v for v in values))
+        if norm < 1e-9:
+            msg = f'{name} quaternion [x, y, z, w] must not be zero, got {_show(value)}'
+            raise NodeConfigError(msg)
+        return (values[0] / norm, values[1] / norm, values[2] / norm, values[3] / norm)
+    msg = (
+        f'{name} must be 3 numbers [roll, pitch, yaw] or 4 [x, y, z, w] (quaternion), '
+        f'got {_show(value)}'
+    )
+    raise NodeConfigError(msg)
+
+
+def _number_list(name: str, value: Any) -> list[float]:
+    if hasattr(value, 'tolist'):
+        value = value.tolist()
+    if isinstance(value, (str, bytes)) or not isinstance(value, Sequence):
+        msg = f'{name} must be a list of numbers, got {_show(value)}'
+        raise NodeConfigError(msg)
+    numbers = []
+    for item in value:
+        if isinstance(item, bool) or not isinstance(item, (int, float)):
+            msg = f'{name} must be a list of numbers, got {_show(value)}'
+            raise NodeConfigError(msg)
+        if not math.isfinite(float(item)):
+            msg = f'{name} must contain finite numbers, got {_show(value)}'
+            raise NodeConfigError(msg)
+        numbers.append(float(item))
+    return numbers
+
+
+def _show(value: Any) -> str:
+    if hasattr(value, 'tolist'):
+        value = value.tolist()
+    return repr(list(value)) if isinstance(value, tuple) else repr(value)
+
+
+def make_transform_stamped(
+    parent: str, child: str, stamp_ns: int, translation: Sequence[float], rotation: Sequence[float]
+) -> Any:
+    """Build the world's ``geometry_msgs/TransformStamped`` for target_T_source values."""
+    from tf_demo.transport.messages import geometry_msgs
+
+    msg = geometry_msgs.TransformStamped()
+    fill_transform_stamped(msg, parent, child, stamp_ns, tuple(translation), tuple(rotation))
+    return msg
+
+
+def now_ns(node: Any) -> int:
+    """Return the node clock's current time in integer nanoseconds."""
+    return int(node.get_clock().now().nanoseconds)
