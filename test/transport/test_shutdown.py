@@ -1,0 +1,143 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Ctrl-C and SIGTERM stop a real node process cleanly; config errors exit 1 on one line."""
+
+from pathlib import Path
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+from tf_demo import transport
+from tf_demo.transport.messages import std_msgs
+from tf_demo.transport.qos import QoSProfile
+
+pytestmark = pytest.mark.dds
+
+COUNTER_NODE = """
+import sys
+from tf_demo.transport import Node, NodeConfigError, run_node
+from tf_demo.transport.messages import std_msgs
+
+
+class Counter(Node):
+    def __init__(self):
+        super().__init__('counter')
+        period = self.declare_parameter('period', 0.01).value
+        if period <= 0.0:
+            raise NodeConfigError(f'period must be positive, got {period}')
+        self.count = 0
+        self.publisher = self.create_publisher(std_msgs.String, 'count', 1000)
+        self.timer = self.create_timer(period, self.tick)
+        self.get_logger().info('counting')
+
+    def tick(self):
+        self.count += 1
+        self.publisher.publish(std_msgs.String(data=str(self.count)))
+
+    def destroy_node(self):
+        print(f'last {self.count}', flush=True)
+        super().destroy_node()
+
+
+sys.exit(run_node(Counter))
+"""
+
+
+def start_counter(tmp_path: Path, env: dict[str, str], *args: str) -> subprocess.Popen[str]:
+    script = tmp_path / 'counter.py'
+    script.write_text(COUNTER_NODE, encoding='utf-8')
+    return subprocess.Popen(
+        [sys.executable, str(script), *args],
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+
+
+def wait_for_line(process: subprocess.Popen[str], text: str) -> None:
+    """Read stderr lines until one contains text (bounded by the process's own output)."""
+    assert process.stderr is not None
+    for line in process.stderr:
+        if text in line:
+            return
+    pytest.fail(f'process ended before printing {text!r}')
+
+
+@pytest.mark.parametrize('signum', [signal.SIGINT, signal.SIGTERM])
+def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
+    dds_env: dict[str, str], tmp_path: Path, signum: signal.Signals
+) -> None:
+    """After SIGINT or SIGTERM the node exits 0 without traceback and its last sample arrives."""
+    transport.init(['test'])
+    received: list[int] = []
+    try:
+        listener = transport.create_node('shutdown_listener')
+        listener.create_subscription(
+            std_msgs.String,
+            'count',
+            lambda msg: received.append(int(msg.data)),
+            QoSProfile(depth=1000),
+        )
+        executor = transport.SingleThreadedExecutor()
+        executor.add_node(listener)
+        process = start_counter(tmp_path, dds_env)
+        try:
+            wait_for_line(process, 'counting')
+            deadline = time.monotonic() + 30
+            while len(received) < 20 and time.monotonic() < deadline:
+                executor.spin_once(timeout_sec=0.1)
+            assert received, 'no sample from the counter node'
+            process.send_signal(signum)
+            stdout, stderr = process.communicate(timeout=20)
+        finally:
+            if process.poll() is None:
+                process.kill()
+                process.wait()
+        assert process.returncode == 0, stderr
+        assert 'Traceback' not in stderr
+        last = int(stdout.split('last ')[-1])
+        deadline = time.monotonic() + 10
+        while received[-1] < last and time.monotonic() < deadline:
+            executor.spin_once(timeout_sec=0.1)
+        assert received[-1] == last
+        assert received == list(range(received[0], last + 1))
+    finally:
+        transport.shutdown()
+
+
+def test_config_error_from_the_node_exits_1_on_one_line(
+    dds_env: dict[str, str], tmp_path: Path
+) -> None:
+    """A NodeConfigError raised by the constructor prints one line and exits 1."""
+    process = start_counter(tmp_path, dds_env, '--ros-args', '-p', 'period:=-1.0')
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 1
+    assert stderr.strip().splitlines() == ['counter.py: error: period must be positive, got -1.0']
+
+
+def test_parameter_type_error_exits_1_with_rclpys_text(
+    dds_env: dict[str, str], tmp_path: Path
+) -> None:
+    """An override of the wrong type (int for a double) is a config error, not a traceback."""
+    process = start_counter(tmp_path, dds_env, '--ros-args', '-p', 'period:=1')
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 1
+    assert stderr.strip().splitlines() == [
+        "counter.py: error: Trying to set parameter 'period' to '1' of type 'INTEGER', "
+        "expecting type 'DOUBLE': period"
+    ]

@@ -1,0 +1,97 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""use_sim_time: a /clock publisher over real DDS drives node.get_clock().now()."""
+
+import time
+
+import pytest
+from tf_demo import transport
+from tf_demo.transport.clock import ClockType
+from tf_demo.transport.clock import Time
+from tf_demo.transport.messages import builtin_interfaces
+from tf_demo.transport.messages import rosgraph_msgs
+from tf_demo.transport.parameters import Parameter
+
+pytestmark = pytest.mark.dds
+
+
+def spin_until(executor, condition, publish=None, limit_s: float = 20.0) -> bool:
+    """Spin (publishing /clock each round) until condition() holds or the limit passes."""
+    deadline = time.monotonic() + limit_s
+    while time.monotonic() < deadline:
+        if publish is not None:
+            publish()
+        executor.spin_once(timeout_sec=0.05)
+        if condition():
+            return True
+    return condition()
+
+
+def test_clock_topic_drives_now_when_use_sim_time_is_set(dds_env: dict[str, str]) -> None:
+    """With -p use_sim_time:=true, now() follows /clock; turning it off returns to system time."""
+    transport.init(['test'])
+    try:
+        simulator = transport.create_node('simulator')
+        clock_publisher = simulator.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
+        node = transport.create_node(
+            'sim_node', cli_args=['--ros-args', '-p', 'use_sim_time:=true']
+        )
+        assert node.get_parameter('use_sim_time').value is True
+        executor = transport.SingleThreadedExecutor()
+        executor.add_node(simulator)
+        executor.add_node(node)
+        clock = node.get_clock()
+        assert clock.clock_type is ClockType.ROS_TIME
+        assert clock.now().nanoseconds == 0  # ROS time is active but no /clock yet
+        target = Time(seconds=42, nanoseconds=5, clock_type=ClockType.ROS_TIME)
+
+        def publish() -> None:
+            clock_publisher.publish(
+                rosgraph_msgs.Clock(clock=builtin_interfaces.Time(sec=42, nanosec=5))
+            )
+
+        assert spin_until(executor, lambda: clock.now() == target, publish)
+        later = Time(seconds=43, clock_type=ClockType.ROS_TIME)
+
+        def publish_later() -> None:
+            clock_publisher.publish(
+                rosgraph_msgs.Clock(clock=builtin_interfaces.Time(sec=43, nanosec=0))
+            )
+
+        assert spin_until(executor, lambda: clock.now() == later, publish_later)
+        [result] = node.set_parameters([Parameter('use_sim_time', value=False)])
+        assert result.successful
+        assert clock.now().nanoseconds > 1_600_000_000 * 10**9  # system time again (after 2020)
+    finally:
+        transport.shutdown()
+
+
+def test_without_use_sim_time_clock_messages_are_ignored(dds_env: dict[str, str]) -> None:
+    """A node without use_sim_time keeps system time even while /clock is published."""
+    transport.init(['test'])
+    try:
+        simulator = transport.create_node('simulator')
+        clock_publisher = simulator.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
+        node = transport.create_node('wall_node')
+        assert node.get_parameter('use_sim_time').value is False
+        executor = transport.SingleThreadedExecutor()
+        executor.add_node(simulator)
+        executor.add_node(node)
+        for _ in range(10):
+            clock_publisher.publish(rosgraph_msgs.Clock(clock=builtin_interfaces.Time(sec=7)))
+            executor.spin_once(timeout_sec=0.02)
+        assert node.get_clock().now().nanoseconds > 1_600_000_000 * 10**9
+    finally:
+        transport.shutdown()
