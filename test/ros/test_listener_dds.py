@@ -1,0 +1,223 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""TransformListener and the broadcasters over real DDS on loopback (in-process and spawned)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from collections.abc import Iterator
+import threading
+import time
+from typing import Any
+
+import pytest
+from tf_demo import transport
+from tf_demo.core.exceptions import LookupException
+from tf_demo.ros import Buffer
+from tf_demo.ros import StaticTransformBroadcaster
+from tf_demo.ros import TransformBroadcaster
+from tf_demo.ros import TransformListener
+from tf_demo.ros.node_helpers import make_transform_stamped
+from tf_demo.transport.clock import Duration
+from tf_demo.transport.messages import rosgraph_msgs
+from tf_demo.transport.messages import tf2_msgs
+from tf_demo.transport.parameters import Parameter
+from tf_demo.transport.qos import StaticListenerQoS
+
+pytestmark = pytest.mark.dds
+
+S = 1_000_000_000
+DISCOVERY_TIMEOUT_S = 20.0
+
+
+def wait_for(condition: Callable[[], bool], timeout_s: float = DISCOVERY_TIMEOUT_S) -> bool:
+    """Bounded wait for something that arrives over the network (not a timing assertion)."""
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        if condition():
+            return True
+        time.sleep(0.02)
+    return condition()
+
+
+@pytest.fixture
+def ros(dds_env: dict[str, str]) -> Iterator[None]:
+    """Initialise the selected backend (DDS) on the test's private domain."""
+    del dds_env
+    transport.init(['test'])
+    try:
+        yield
+    finally:
+        transport.shutdown()
+
+
+class Spinner:
+    """Spins some nodes in a background executor thread for the duration of a test."""
+
+    def __init__(self, *nodes: Any) -> None:
+        self.executor = transport.SingleThreadedExecutor()
+        for node in nodes:
+            self.executor.add_node(node)
+        self._stop = threading.Event()
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+
+    def _run(self) -> None:
+        while not self._stop.is_set():
+            self.executor.spin_once(timeout_sec=0.05)
+
+    def stop(self) -> None:
+        self._stop.set()
+        self.thread.join(5.0)
+
+
+def translation(msg: Any) -> tuple[float, float, float]:
+    t = msg.transform.translation
+    return (t.x, t.y, t.z)
+
+
+def test_static_broadcaster_replaces_by_child_and_late_listener_gets_the_set(ros: None) -> None:
+    """Resending a child replaces it (C++ semantics); a late listener receives the whole set."""
+    publisher = transport.create_node('static_pub')
+    broadcaster = StaticTransformBroadcaster(publisher)
+    broadcaster.send_transform(make_transform_stamped('a', 'b', 0, (1.0, 2.0, 3.0), (0, 0, 0, 1)))
+    broadcaster.send_transform(
+        [
+            make_transform_stamped('a', 'c', 0, (7.0, 8.0, 9.0), (0, 0, 0, 1)),
+            make_transform_stamped('a', 'b', 0, (4.0, 5.0, 6.0), (0, 0, 0, 1)),
+        ]
+    )
+    assert [t.child_frame_id for t in broadcaster.transforms] == ['b', 'c']
+    late = transport.create_node('late_listener')
+    received: list[Any] = []
+    late.create_subscription(
+        tf2_msgs.TFMessage, '/tf_static', received.append, StaticListenerQoS()
+    )
+    buffer = Buffer(node=late)
+    listener = TransformListener(buffer, late, spin_thread=True)
+    spinner = Spinner(late)
+    try:
+        assert buffer.can_transform('a', 'c', 0, Duration(seconds=DISCOVERY_TIMEOUT_S))
+        assert translation(buffer.lookup_transform('a', 'b', 0)) == (4.0, 5.0, 6.0)
+        assert wait_for(lambda: len(received) >= 1)
+        assert [t.child_frame_id for t in received[-1].transforms] == ['b', 'c']
+    finally:
+        spinner.stop()
+        listener.unregister()
+
+
+def test_listener_skips_garbage_transforms_and_keeps_the_rest(ros: None) -> None:
+    """A NaN and an empty child in one TFMessage are dropped; the good transforms are used."""
+    listener_node = transport.create_node('listener')
+    buffer = Buffer(node=listener_node)
+    listener = TransformListener(buffer, listener_node, spin_thread=True)
+    publisher = transport.create_node('garbage_pub')
+    broadcaster = TransformBroadcaster(publisher)
+    try:
+        assert wait_for(lambda: publisher.count_subscribers('/tf') >= 1)
+        now = time.time_ns()
+        broadcaster.send_transform(
+            [
+                make_transform_stamped('a', 'good1', now, (1.0, 0.0, 0.0), (0, 0, 0, 1)),
+                make_transform_stamped('a', 'nan', now, (float('nan'), 0.0, 0.0), (0, 0, 0, 1)),
+                make_transform_stamped('a', '', now, (0.0, 0.0, 0.0), (0, 0, 0, 1)),
+                make_transform_stamped('a', 'good2', now, (2.0, 0.0, 0.0), (0, 0, 0, 1)),
+            ]
+        )
+        assert buffer.can_transform('a', 'good2', 0, Duration(seconds=DISCOVERY_TIMEOUT_S))
+        assert translation(buffer.lookup_transform('a', 'good1', 0)) == (1.0, 0.0, 0.0)
+        with pytest.raises(LookupException):
+            buffer.lookup_transform('a', 'nan', 0)
+    finally:
+        listener.unregister()
+
+
+def test_spin_thread_listener_does_not_spin_the_users_node(ros: None) -> None:
+    """With spin_thread=True the user's own timer is not run by the listener's thread."""
+    user_node = transport.create_node('user')
+    fired: list[int] = []
+    user_node.create_timer(0.01, lambda: fired.append(1))
+    buffer = Buffer(node=user_node)
+    listener = TransformListener(buffer, user_node, spin_thread=True)
+    publisher = transport.create_node('pub')
+    StaticTransformBroadcaster(publisher).send_transform(
+        make_transform_stamped('a', 'b', 0, (1.0, 0.0, 0.0), (0, 0, 0, 1))
+    )
+    try:
+        assert buffer.can_transform('a', 'b', 0, Duration(seconds=DISCOVERY_TIMEOUT_S))
+        assert fired == []
+    finally:
+        listener.unregister()
+
+
+def test_wait_started_before_the_publisher_process_resolves(spawn: Any, ros: None) -> None:
+    """An async wait begun before frame_broadcaster starts resolves once its /tf arrives."""
+    node = transport.create_node('waiter')
+    buffer = Buffer(node=node)
+    listener = TransformListener(buffer, node, spin_thread=True)
+    future = buffer.wait_for_transform_async(
+        'base_link', 'camera_link', 0, timeout=Duration(seconds=60)
+    )
+    assert not future.done()
+    spawn.start('frame_broadcaster')
+    try:
+        assert future.wait(60.0)
+        assert translation(future.result()) == pytest.approx((0.1, 0.2, 0.3))
+    finally:
+        listener.unregister()
+
+
+def test_timeout_on_sim_time_over_dds(ros: None) -> None:
+    """With use_sim_time the wait ends when /clock passes the timeout, not on wall time."""
+    sim_node = transport.create_node(
+        'sim_user', parameter_overrides=[Parameter('use_sim_time', value=True)]
+    )
+    clock_node = transport.create_node('clock_pub')
+    clock_pub = clock_node.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
+    spinner = Spinner(sim_node)
+    buffer = Buffer(node=sim_node)
+
+    def publish_clock(seconds: float) -> None:
+        msg = rosgraph_msgs.Clock()
+        msg.clock.sec, msg.clock.nanosec = int(seconds), round(seconds % 1 * 1e9)
+        clock_pub.publish(msg)
+
+    try:
+        assert wait_for(lambda: clock_node.count_subscribers('/clock') >= 1)
+
+        def clock_reached(seconds: float) -> bool:
+            publish_clock(seconds)
+            return bool(sim_node.get_clock().now().nanoseconds == seconds * S)
+
+        assert wait_for(lambda: clock_reached(1000.0))
+        box: dict[str, Any] = {}
+
+        def blocking_wait() -> None:
+            box['result'] = buffer.can_transform('a', 'b', 0, Duration(seconds=3))
+
+        waiter = threading.Thread(target=blocking_wait, daemon=True)
+        waiter.start()
+        publish_clock(1001.0)
+        waiter.join(1.0)
+        assert waiter.is_alive(), 'timed out before 3 s of sim time'
+
+        def waiter_finished_at(seconds: float) -> bool:
+            publish_clock(seconds)
+            return not waiter.is_alive()
+
+        assert wait_for(lambda: waiter_finished_at(1004.0))
+        assert box == {'result': False}
+    finally:
+        spinner.stop()
