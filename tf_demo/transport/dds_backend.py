@@ -123,9 +123,10 @@ def validate_namespace(namespace: str) -> None:
     _validate_tokens(kind, namespace)
 
 
-def _validate_tokens(kind: str, name: str) -> None:
+def _validate_tokens(kind: str, name: str, extra_chars: str = '') -> None:
+    allowed = '_/' + extra_chars
     for index, char in enumerate(name):
-        if not (char.isascii() and (char.isalnum() or char in '_/')):
+        if not (char.isascii() and (char.isalnum() or char in allowed)):
             raise InvalidNameError(
                 kind,
                 name,
@@ -170,6 +171,7 @@ def expand_topic_name(topic: str, node_name: str, namespace: str) -> str:
         raise InvalidNameError(kind, topic, "'~' must be followed by '/'", 1)
     if topic.endswith('/'):
         raise InvalidNameError(kind, topic, "topic name must not end with '/'", len(topic) - 1)
+    _validate_tokens(kind, topic, '~{}')
     node_fqn = namespace.rstrip('/') + '/' + node_name
     expanded = topic
     for key, value in (('{node}', node_name), ('{ns}', namespace), ('{namespace}', namespace)):

@@ -1,0 +1,240 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""DdsNode: rcl's naming rules, --ros-args, executors, timers, sim time and bad input."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from collections.abc import Iterator
+import time
+
+import pytest
+from tf_demo.msgs import builtin_interfaces
+from tf_demo.msgs import geometry_msgs
+from tf_demo.msgs import rosgraph_msgs
+from tf_demo.msgs import std_msgs
+from tf_demo.msgs import tf2_msgs
+from tf_demo.transport import dds_backend
+from tf_demo.transport.parameters import Parameter
+from tf_demo.transport.qos import QoSProfile
+from tf_demo.transport.qos import ReliabilityPolicy
+
+# -- names (pure) -------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ('topic', 'namespace', 'expanded'),
+    [
+        ('tf', '/', '/tf'),
+        ('/tf', '/robot', '/tf'),
+        ('tf', '/robot', '/robot/tf'),
+        ('a/b', '/robot', '/robot/a/b'),
+        ('~', '/robot', '/robot/talker'),
+        ('~/status', '/', '/talker/status'),
+        ('~/status', '/robot', '/robot/talker/status'),
+        ('{node}/x', '/', '/talker/x'),
+        ('{ns}/x', '/robot', '/robot/x'),
+    ],
+)
+def test_topic_names_expand_like_rcl(topic, namespace, expanded):
+    """Relative names join the namespace, ~ is the node's FQN, {node}/{ns} are substituted."""
+    assert dds_backend.expand_topic_name(topic, 'talker', namespace) == expanded
+
+
+@pytest.mark.parametrize(
+    ('topic', 'reason', 'index'),
+    [
+        ('', 'must not be empty', 0),
+        ('a//b', "repeated '/'", 1),
+        ('a/1b', 'must not start with a number', 2),
+        ('a b', 'characters other than', 1),
+        ('tf/', "must not end with '/'", 2),
+        ('~x', "'~' must be followed by '/'", 1),
+        ('a~', "'~' must only be the first character", 1),
+        ('{bogus}/x', 'unknown substitution', 6),
+    ],
+)
+def test_invalid_topic_names_are_refused_with_a_pointer(topic, reason, index):
+    """Each rcl topic-name rule yields InvalidNameError naming the rule and the position."""
+    with pytest.raises(dds_backend.InvalidNameError) as caught:
+        dds_backend.expand_topic_name(topic, 'talker', '/')
+    assert reason in str(caught.value)
+    assert caught.value.index == index
+
+
+def test_node_name_and_namespace_rules():
+    """Node names are alphanumerics/underscore not starting with a digit; namespaces absolute."""
+    dds_backend.validate_node_name('my_node2')
+    dds_backend.validate_namespace('/')
+    dds_backend.validate_namespace('/a/b_c')
+    with pytest.raises(dds_backend.InvalidNameError, match='must not start with a number'):
+        dds_backend.validate_node_name('2node')
+    with pytest.raises(dds_backend.InvalidNameError, match='other than alphanumerics') as caught:
+        dds_backend.validate_node_name('my-node')
+    assert "\n  'my-node'\n     ^" in str(caught.value)
+    with pytest.raises(dds_backend.InvalidNameError, match='must be absolute'):
+        dds_backend.validate_namespace('robot')
+    with pytest.raises(dds_backend.InvalidNameError, match="must not end with '/'"):
+        dds_backend.validate_namespace('/robot/')
+
+
+# -- nodes on real DDS (in this process) --------------------------------------------------------
+
+
+@pytest.fixture
+def world(dds_env: dict[str, str]) -> Iterator[None]:
+    """An initialised standalone world on the test's private domain, shut down afterwards."""
+    dds_backend.init()
+    yield
+    dds_backend.shutdown()
+
+
+def spin_until(
+    executor: dds_backend.DdsExecutor, done: Callable[[], bool], timeout: float = 10.0
+) -> bool:
+    deadline = time.monotonic() + timeout
+    while not done() and time.monotonic() < deadline:
+        executor.spin_once(timeout_sec=0.05)
+    return done()
+
+
+def one_transform(x: float) -> tf2_msgs.TFMessage:
+    transform = geometry_msgs.TransformStamped()
+    transform.header.frame_id = 'odom'
+    transform.child_frame_id = 'base_link'
+    transform.transform.translation.x = x
+    transform.transform.rotation.w = 1.0
+    return tf2_msgs.TFMessage(transforms=[transform])
+
+
+@pytest.mark.dds
+def test_ros_args_rename_remap_and_override(world):
+    """__node, __ns, -r and -p from cli_args shape the node's name, topics and parameters."""
+    node = dds_backend.DdsNode(
+        'original',
+        cli_args=[
+            '--ros-args', '-r', '__node:=renamed', '-r', '__ns:=/robot',
+            '-r', 'chatter:=talk', '-p', 'rate:=5.0',
+        ],
+    )  # fmt: skip
+    assert node.get_name() == 'renamed'
+    assert node.get_namespace() == '/robot'
+    assert node.get_fully_qualified_name() == '/robot/renamed'
+    publisher = node.create_publisher(std_msgs.String, 'chatter', 10)
+    assert publisher.topic_name == '/robot/talk'
+    assert node.declare_parameter('rate', 1.0).value == 5.0
+    assert node.count_publishers('/robot/talk') == 1
+    assert node.count_subscribers('/robot/talk') == 0
+
+
+@pytest.mark.dds
+def test_one_executor_runs_callbacks_of_several_nodes(world):
+    """A publisher node and a subscriber node spun by one executor exchange messages in order."""
+    talker = dds_backend.DdsNode('talker')
+    listener = dds_backend.DdsNode('listener')
+    received: list[float] = []
+    listener.create_subscription(
+        tf2_msgs.TFMessage,
+        '/tf',
+        lambda m: received.append(m.transforms[0].transform.translation.x),
+        100,
+    )
+    publisher = talker.create_publisher(tf2_msgs.TFMessage, '/tf', 100)
+    executor = dds_backend.SingleThreadedExecutor()
+    executor.add_node(talker)
+    executor.add_node(listener)
+    sent = iter(range(20))
+    talker.create_timer(0.005, lambda: publisher.publish(one_transform(float(next(sent, 19)))))
+    assert spin_until(executor, lambda: len(received) >= 20)
+    assert received[:20] == [float(i) for i in range(20)]
+    executor.shutdown()
+
+
+@pytest.mark.dds
+def test_malformed_payload_is_logged_and_the_subscription_keeps_working(world, capfd):
+    """Garbage bytes on a topic produce an error line naming the type; good messages still come."""
+    node = dds_backend.DdsNode('robust')
+    received: list[tf2_msgs.TFMessage] = []
+    node.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 10)
+    publisher = node.create_publisher(tf2_msgs.TFMessage, '/tf', 10)
+    executor = dds_backend.SingleThreadedExecutor()
+    executor.add_node(node)
+    publisher.publish(b'\x00\x01\x00\x00\x05\x00\x00\x00')
+    publisher.publish(one_transform(3.0))
+    assert spin_until(executor, lambda: len(received) == 1)
+    assert received[0].transforms[0].transform.translation.x == 3.0
+    assert "Dropped a malformed tf2_msgs/msg/TFMessage message on '/tf'" in capfd.readouterr().err
+    executor.shutdown()
+
+
+@pytest.mark.dds
+def test_publish_rejects_the_wrong_message_type(world):
+    """Publishing a String on a TFMessage publisher raises TypeError naming both types."""
+    node = dds_backend.DdsNode('strict')
+    publisher = node.create_publisher(tf2_msgs.TFMessage, '/tf', 10)
+    with pytest.raises(TypeError, match='Expected TFMessage, got String'):
+        publisher.publish(std_msgs.String(data='x'))
+    with pytest.raises(TypeError, match='QoSProfile or a history depth'):
+        node.create_publisher(tf2_msgs.TFMessage, '/tf', 'reliable')
+
+
+@pytest.mark.dds
+def test_timers_fire_periodically_and_stop_when_canceled(world):
+    """A 10 ms timer fires repeatedly under spin_once; after cancel() it no longer fires."""
+    node = dds_backend.DdsNode('ticker')
+    ticks: list[int] = []
+    timer = node.create_timer(0.01, lambda: ticks.append(1))
+    executor = dds_backend.SingleThreadedExecutor()
+    executor.add_node(node)
+    assert spin_until(executor, lambda: len(ticks) >= 5)
+    timer.cancel()
+    count = len(ticks)
+    for _ in range(5):
+        executor.spin_once(timeout_sec=0.02)
+    assert len(ticks) == count
+    with pytest.raises(ValueError, match='timer period must be > 0'):
+        node.create_timer(0.0, lambda: None)
+
+
+@pytest.mark.dds
+def test_use_sim_time_drives_the_node_clock_from_clock_topic(world):
+    """With use_sim_time true, get_clock().now() follows the /clock messages."""
+    node = dds_backend.DdsNode('sim', parameter_overrides=[Parameter('use_sim_time', value=True)])
+    clock_node = dds_backend.DdsNode('clock_source')
+    clock_publisher = clock_node.create_publisher(
+        rosgraph_msgs.Clock,
+        '/clock',
+        QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT),
+    )
+    executor = dds_backend.SingleThreadedExecutor()
+    executor.add_node(node)
+    deadline = time.monotonic() + 10
+    while node.get_clock().now().nanoseconds != 42_000_000_007 and time.monotonic() < deadline:
+        clock_publisher.publish(
+            rosgraph_msgs.Clock(clock=builtin_interfaces.Time(sec=42, nanosec=7))
+        )
+        executor.spin_once(timeout_sec=0.05)
+    assert node.get_clock().now().nanoseconds == 42_000_000_007
+    assert node.get_parameter('use_sim_time').value is True
+
+
+@pytest.mark.dds
+def test_destroyed_node_refuses_new_entities(world):
+    """After destroy_node, creating a publisher says the node was destroyed."""
+    node = dds_backend.DdsNode('gone', namespace='ns')
+    assert node.get_fully_qualified_name() == '/ns/gone'
+    node.destroy_node()
+    with pytest.raises(RuntimeError, match="node '/ns/gone' was destroyed"):
+        node.create_publisher(std_msgs.String, 'x', 1)
