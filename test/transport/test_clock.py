@@ -218,8 +218,8 @@ def test_sleep_until_returns_false_when_ros_time_is_deactivated() -> None:
 
 
 def test_sleep_until_rejects_another_clock_type() -> None:
-    """A target time of another clock type raises TypeError."""
-    with pytest.raises(TypeError, match="until's clock type does not match"):
+    """A target time of another clock type raises ValueError, as in rclpy."""
+    with pytest.raises(ValueError, match="until's clock type does not match"):
         ROSClock().sleep_until(Time(seconds=1))
 
 

@@ -159,3 +159,24 @@ def test_colorized_output_wraps_lines_in_rcutils_colors(tmp_path: Path) -> None:
     warn = next(line for line in lines if 'warn from talker' in line)
     assert warn.startswith('\x1b[33m[WARN] [')
     assert warn.endswith('\x1b[0m')
+
+
+def test_filters_are_not_consumed_by_calls_below_the_level(
+    capfd: pytest.CaptureFixture[str],
+) -> None:
+    """As in rclpy, once is only spent by a call that passes the level check."""
+    logger = get_logger('test_logging_level_then_once')
+    logger.set_level(LoggingSeverity.ERROR)
+    results = []
+    for level in (LoggingSeverity.ERROR, LoggingSeverity.INFO, LoggingSeverity.INFO):
+        logger.set_level(level)
+        results.append(logger.info('first allowed call', once=True))
+    assert results == [False, True, False]
+    assert capfd.readouterr().err.count('first allowed call') == 1
+
+
+def test_name_option_logs_under_another_logger(capfd: pytest.CaptureFixture[str]) -> None:
+    """The name= keyword logs under that logger name, as rclpy's RcutilsLogger.log does."""
+    get_logger('test_logging_a').log('x', LoggingSeverity.WARN, name='test_logging_b')
+    [line] = capfd.readouterr().err.splitlines()
+    assert LINE.match(line).group(4) == 'test_logging_b'

@@ -33,6 +33,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from enum import IntEnum
 import math
+import sys
 import threading
 import time as _time
 from typing import Any
@@ -423,9 +424,23 @@ class JumpHandle:
             self._clock._remove_jump_handle(self)
             self._clock = None
 
+    def __enter__(self) -> JumpHandle:
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        self.unregister()
+
 
 class _Context(Protocol):
     def ok(self) -> bool: ...
+
+
+def _default_context() -> _Context | None:
+    """Return the standalone backend's context when it is loaded and initialised, else None."""
+    backend = sys.modules.get('tf_demo.transport.dds_backend')
+    if backend is not None and backend.ok():
+        return backend
+    return None
 
 
 class Clock:
@@ -528,7 +543,8 @@ class Clock:
         Sleep until this clock reaches ``until``; in sim time, until ``/clock`` gets there.
 
         :param context: anything with ``ok()``; the sleep ends early when it turns false.
-        :raises TypeError: when ``until`` is of another clock type.
+            ``None``: the standalone backend's process context, when it has been initialised.
+        :raises ValueError: when ``until`` is of another clock type (rclpy's text).
         :return: True when ``until`` was reached, False when woken by shutdown or by ROS time
             being activated or deactivated.
         """
@@ -537,7 +553,9 @@ class Clock:
             raise TypeError(msg)
         if until.clock_type != self._clock_type:
             msg = "until's clock type does not match this clock's type"
-            raise TypeError(msg)
+            raise ValueError(msg)
+        if context is None:
+            context = _default_context()
         with self._condition:
             active_at_start = self._ros_time_active
             while True:

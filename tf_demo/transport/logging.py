@@ -30,6 +30,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from enum import IntEnum
+import math
 import os
 import sys
 import threading
@@ -150,7 +151,7 @@ class _LoggingState:
         self.default_level = LoggingSeverity.INFO
         self.levels: dict[str, LoggingSeverity] = {}
         # once / skip_first / throttle state per (logger, file, line), as rclpy keys it.
-        self.call_sites: dict[tuple[str, str, int], list[Any]] = {}
+        self.call_sites: dict[tuple[str, str, int], dict[str, Any]] = {}
 
     def effective_level(self, name: str) -> LoggingSeverity:
         candidate = name
@@ -201,9 +202,62 @@ def get_logger_effective_level(name: str) -> LoggingSeverity:
     return _STATE.effective_level(name)
 
 
-_SUPPORTED_OPTIONS = frozenset(
-    {'once', 'throttle_duration_sec', 'throttle_time_source_type', 'skip_first'}
-)
+# rclpy's filters, in the order rclpy evaluates them, with their parameters and defaults.
+_FILTER_PARAMETERS: dict[str, dict[str, Any]] = {
+    'throttle': {
+        'throttle_duration_sec': None,
+        'throttle_time_source_type': 'RCUTILS_STEADY_TIME',
+    },
+    'skip_first': {'skip_first': None},
+    'once': {'once': None},
+}
+_ALL_FILTER_PARAMETERS = [name for params in _FILTER_PARAMETERS.values() for name in params]
+
+
+def _detect_filters(options: dict[str, Any]) -> list[str]:
+    """Return the filters requested by ``options`` (rclpy's ``get_filters_from_kwargs``)."""
+    for key in options:
+        if key not in _ALL_FILTER_PARAMETERS:
+            msg = (
+                f'parameter "{key}" is not one of the recognized logging options '
+                f'"{_ALL_FILTER_PARAMETERS}"'
+            )
+            raise TypeError(msg)
+    detected = [
+        name
+        for name, params in _FILTER_PARAMETERS.items()
+        if any(options.get(param) for param in params)
+    ]
+    if 'throttle' in detected:
+        source = options.get('throttle_time_source_type', 'RCUTILS_STEADY_TIME')
+        if source != 'RCUTILS_STEADY_TIME':
+            msg = (
+                f'Received throttle_time_source_type of "{source}"; '
+                'currently only RCUTILS_STEADY_TIME is supported'
+            )
+            raise ValueError(msg)
+    return detected
+
+
+def _filter_allows(name: str, state: dict[str, Any], options: dict[str, Any]) -> bool:
+    """Apply one filter to the per-call-site ``state`` (updating it as rclpy does)."""
+    if name == 'throttle':
+        now = time.monotonic()
+        if now < state.get('throttle_last_logged', -math.inf) + float(
+            options['throttle_duration_sec']
+        ):
+            return False
+        state['throttle_last_logged'] = now
+        return True
+    if name == 'skip_first':
+        if not state.get('first_has_been_skipped'):
+            state['first_has_been_skipped'] = True
+            return False
+        return True
+    if state.get('has_been_logged_once'):
+        return False
+    state['has_been_logged_once'] = True
+    return True
 
 
 class Logger:
@@ -231,55 +285,34 @@ class Logger:
         """Whether a message of ``severity`` would be printed."""
         return LoggingSeverity(severity) >= self.get_effective_level()
 
-    def _passes_filters(self, call_site: tuple[str, str, int], options: dict[str, Any]) -> bool:
-        unknown = set(options) - _SUPPORTED_OPTIONS
-        if unknown:
-            name = sorted(unknown)[0]
-            supported = ', '.join(sorted(_SUPPORTED_OPTIONS))
-            msg = f'parameter "{name}" is not one of the recognized logging options "{supported}"'
-            raise TypeError(msg)
-        if not options:
-            return True
-        with _STATE.lock:
-            state = _STATE.call_sites.setdefault(call_site, [False, 0, None])
-            if options.get('once'):
-                if state[0]:
-                    return False
-                state[0] = True
-                return True
-            if options.get('skip_first') and state[1] == 0:
-                state[1] += 1
-                return False
-            state[1] += 1
-            throttle = options.get('throttle_duration_sec')
-            if throttle is not None:
-                now_ns = time.monotonic_ns()
-                last_ns = state[2]
-                if last_ns is not None and now_ns - last_ns < float(throttle) * 1e9:
-                    return False
-                state[2] = now_ns
-            return True
-
     def log(self, message: Any, severity: LoggingSeverity | int, **kwargs: Any) -> bool:
         """
-        Print ``message`` at ``severity`` if enabled and the filters let it through.
+        Print ``message`` at ``severity`` if enabled and rclpy's filters let it through.
 
-        :param kwargs: ``once=True``, ``throttle_duration_sec=<float>``, ``skip_first=True``.
+        :param kwargs: ``once=True``, ``skip_first=True``, ``throttle_duration_sec=<float>``
+            (evaluated in rclpy's order: throttle, skip_first, once), ``name=`` another logger.
         :return: whether the message was printed.
+        :raises TypeError: for an unknown option, with rclpy's text.
         """
         severity = LoggingSeverity(severity)
+        name = kwargs.pop('name', self.name)
+        filters = _detect_filters(kwargs)
         frame = sys._getframe(1)
         while frame.f_back is not None and frame.f_code.co_filename == __file__:
             frame = frame.f_back
-        call_site = (self.name, frame.f_code.co_filename, frame.f_lineno)
-        if not self._passes_filters(call_site, kwargs):
+        if not get_logger_effective_level(name) <= severity:
             return False
-        if not self.is_enabled_for(severity):
-            return False
+        if filters:
+            call_site = (name, frame.f_code.co_filename, frame.f_lineno)
+            with _STATE.lock:
+                state = _STATE.call_sites.setdefault(call_site, {})
+                for filter_name in filters:
+                    if not _filter_allows(filter_name, state, kwargs):
+                        return False
         stream = _stream()
         line = format_log_line(
             severity,
-            self.name,
+            name,
             str(message),
             time.time_ns(),
             output_format=os.environ.get('RCUTILS_CONSOLE_OUTPUT_FORMAT') or DEFAULT_OUTPUT_FORMAT,
