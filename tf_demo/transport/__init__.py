@@ -162,8 +162,10 @@ class _StopRequest:
             self.previous[signum] = signal.signal(signum, self.handle)
 
     def restore(self) -> None:
-        for signum, handler in self.previous.items():
-            signal.signal(signum, handler)
+        for signum, previous in self.previous.items():
+            # None: the previous handler was installed from C (rclpy's); use Python's default.
+            default = signal.default_int_handler if signum == signal.SIGINT else signal.SIG_DFL
+            signal.signal(signum, default if previous is None else previous)
         self.previous.clear()
 
 
