@@ -71,6 +71,7 @@ ERROR_NO_DATA_FOR_EXTRAPOLATION = 9
 Sample = tuple[float, float, float, float, float, float, float, int]
 
 _NS_PER_S = 1_000_000_000
+_NOT_FOUND = -(1 << 62)  # _bracket's failure value (single matches are encoded as ~index)
 
 
 class TransformStorage(NamedTuple):
@@ -204,18 +205,18 @@ class TimeCache:
         """
         Locate ``time_ns`` as tf2's ``findClosest`` does.
 
-        :returns: -1 on failure, ``~i`` for a single matching sample ``i``, or ``i`` for the
-            older neighbour of an interior time (the newer one is ``i + 1``).
+        :returns: ``_NOT_FOUND`` on failure, ``~i`` for a single matching sample ``i``, or
+            ``i`` for the older neighbour of an interior time (the newer one is ``i + 1``).
         """
         stamps = self._stamps
         start = self._start
         end = len(stamps)
         if start == end:
-            return -1
+            return _NOT_FOUND
         if time_ns == 0:
             return ~(end - 1)
         if end - start == 1:
-            return ~start if stamps[start] == time_ns else -1
+            return ~start if stamps[start] == time_ns else _NOT_FOUND
         latest = stamps[end - 1]
         if time_ns == latest:
             return ~(end - 1)
@@ -223,7 +224,7 @@ class TimeCache:
         if time_ns == earliest:
             return ~start
         if time_ns > latest or time_ns < earliest:
-            return -1
+            return _NOT_FOUND
         return bisect_right(stamps, time_ns, start, end) - 1
 
     def get_data(self, time_ns: int) -> Sample | None:
@@ -236,7 +237,7 @@ class TimeCache:
         """
         found = self._bracket(time_ns)
         if found < 0:
-            if found == -1:
+            if found == _NOT_FOUND:
                 return None
             return self._sample(~found)
         parents = self._parents
@@ -283,7 +284,7 @@ class TimeCache:
     def get_parent(self, time_ns: int) -> int:
         """Return the parent id at ``time_ns`` (older neighbour's parent), or 0 on failure."""
         found = self._bracket(time_ns)
-        if found == -1:
+        if found == _NOT_FOUND:
             return 0
         return self._parents[~found if found < 0 else found]
 

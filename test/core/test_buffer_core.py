@@ -1,0 +1,524 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""BufferCore against the worked examples of spec/tf2.md §1-3 and tf2's simple_tf2_core tests."""
+
+from __future__ import annotations
+
+import logging
+import math
+
+import numpy as np
+import pytest
+from tf_demo.core import BackwardExtrapolationException
+from tf_demo.core import BufferCore
+from tf_demo.core import ConnectivityException
+from tf_demo.core import ExtrapolationException
+from tf_demo.core import ForwardExtrapolationException
+from tf_demo.core import InvalidArgumentException
+from tf_demo.core import LookupException
+from tf_demo.core import math3d
+from tf_demo.core import NoDataForExtrapolationException
+from tf_demo.core import TransformException
+
+S = 1_000_000_000
+IDENTITY = (0.0, 0.0, 0.0, 1.0)
+SUFFIX_BAR_FOO = ', when looking up transform from frame [bar] to frame [foo]'
+
+
+class Log:
+    """Collects tf2's log lines."""
+
+    def __init__(self):
+        self.lines: list[tuple[int, str]] = []
+
+    def __call__(self, level, text):
+        self.lines.append((level, text))
+
+
+@pytest.fixture
+def log():
+    return Log()
+
+
+@pytest.fixture
+def rep105():
+    """map->odom static, odom->base at {10,11}, base->laser at {5,12}, base->cam static."""
+    core = BufferCore()
+    core.set_transform('map', 'odom', 0, (1.0, 0.0, 0.0), IDENTITY, 'a', True)
+    core.set_transform('odom', 'base', 10 * S, (1.0, 0.0, 0.0), IDENTITY, 'b')
+    core.set_transform('odom', 'base', 11 * S, (2.0, 0.0, 0.0), IDENTITY, 'b')
+    core.set_transform('base', 'laser', 5 * S, (0.0, 0.0, 1.0), IDENTITY, 'c')
+    core.set_transform('base', 'laser', 12 * S, (0.0, 0.0, 2.0), IDENTITY, 'c')
+    core.set_transform('base', 'cam', 0, (0.0, 1.0, 0.0), IDENTITY, 'd', True)
+    return core
+
+
+def test_lookup_direction_matches_tf2():
+    """With a->b at x=+1, lookup(a, b) has x=+1 and lookup(b, a) has x=-1."""
+    core = BufferCore()
+    core.set_transform('a', 'b', S, (1.0, 0.0, 0.0), IDENTITY)
+    assert core.lookup_transform('a', 'b', 0).translation == (1.0, 0.0, 0.0)
+    assert core.lookup_transform('b', 'a', 0).translation == (-1.0, 0.0, 0.0)
+
+
+def test_validation_log_texts(log):
+    """Every failed check logs tf2's exact ERROR line, several per message when needed."""
+    core = BufferCore(log=log)
+    assert not core.set_transform('a', 'a', S, (0, 0, 0), IDENTITY, 'auth')
+    assert log.lines[-1] == (
+        logging.ERROR,
+        'TF_SELF_TRANSFORM: Ignoring transform from authority "auth" with frame_id and  '
+        'child_frame_id "a" because they are the same',
+    )
+    log.lines.clear()
+    assert not core.set_transform('', '', S, (0, 0, 0), IDENTITY, 'auth')
+    assert [text.split(':')[0] for _, text in log.lines] == [
+        'TF_SELF_TRANSFORM',
+        'TF_NO_CHILD_FRAME_ID',
+        'TF_NO_FRAME_ID',
+    ]
+    assert log.lines[1][1] == (
+        'TF_NO_CHILD_FRAME_ID: Ignoring transform from authority "auth" because child_frame_id '
+        'not set '
+    )
+    assert log.lines[2][1] == (
+        'TF_NO_FRAME_ID: Ignoring transform with child_frame_id ""  from authority "auth" '
+        'because frame_id not set'
+    )
+    log.lines.clear()
+    assert not core.set_transform('p', 'c', S, (math.nan, 0, 0), IDENTITY, 'auth')
+    assert log.lines == [
+        (
+            logging.ERROR,
+            'TF_NAN_INPUT: Ignoring transform for child_frame_id "c" from authority "auth" '
+            'because of a nan value in the transform (nan 0.000000 0.000000) '
+            '(0.000000 0.000000 0.000000 1.000000)',
+        )
+    ]
+    log.lines.clear()
+    assert not core.set_transform('p', 'c', S, (0, 0, 0), (0, 0, 0, 0), 'auth')
+    assert [text.split(':')[0] for _, text in log.lines] == [
+        'TF_NAN_INPUT',
+        'TF_DENORMALIZED_QUATERNION',
+    ]
+    assert log.lines[1][1].startswith(
+        'TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id "c" from authority '
+        '"auth" because of an invalid quaternion in the transform ('
+    )
+    assert core.frame_ids() == []
+
+
+def test_infinite_translation_is_accepted(log):
+    """Inf in the translation is not rejected (only NaN is)."""
+    core = BufferCore(log=log)
+    assert core.set_transform('p', 'c', S, (math.inf, 0, 0), IDENTITY)
+    assert log.lines == []
+
+
+def test_old_data_warning(log):
+    """Too-old data logs TF_OLD_DATA with a real newline and %20."""
+    core = BufferCore(2 * S, log=log)
+    assert core.set_transform('p', 'c', 10 * S, (0, 0, 0), IDENTITY, 'me')
+    assert not core.set_transform('p', 'c', 7 * S, (0, 0, 0), IDENTITY, 'me')
+    assert log.lines == [
+        (
+            logging.WARNING,
+            'TF_OLD_DATA ignoring data from the past for frame c at time 7.000000 according to '
+            'authority me\nPossible reasons are listed at '
+            'http://wiki.ros.org/tf/Errors%20explained',
+        )
+    ]
+
+
+def test_quaternion_normalised_and_canonicalised_on_insert():
+    """(0,0,0,2) -> identity, (0,0,0,-1) -> identity, (0.1,0.2,0.3,-0.9) -> tf2's value."""
+    core = BufferCore()
+    core.set_transform('p', 'a', S, (0, 0, 0), (0, 0, 0, 2))
+    core.set_transform('p', 'b', S, (0, 0, 0), (0, 0, 0, -1))
+    core.set_transform('p', 'c', S, (0, 0, 0), (0.1, 0.2, 0.3, -0.9))
+    assert core.lookup_transform('p', 'a', 0).rotation == (0.0, 0.0, 0.0, 1.0)
+    assert core.lookup_transform('p', 'b', 0).rotation == (0.0, 0.0, 0.0, 1.0)
+    assert core.lookup_transform('p', 'c', 0).rotation == pytest.approx(
+        (-0.102598, -0.205196, -0.307794, 0.923381), abs=1e-6
+    )
+
+
+def test_leading_slash_stripped_once():
+    """One leading slash is stripped; '//y' is stored as '/y'."""
+    core = BufferCore()
+    core.set_transform('/p', '/c', S, (1, 0, 0), IDENTITY)
+    core.set_transform('p', '//y', S, (1, 0, 0), IDENTITY)
+    assert core.frame_ids() == ['c', 'p', '/y']
+    assert core.lookup_transform('p', 'c', 0).translation == (1.0, 0.0, 0.0)
+
+
+def test_ids_child_first_and_kept_after_clear():
+    """A new child gets its id before its parent; clear() keeps ids, authorities, statics."""
+    core = BufferCore()
+    core.set_transform('parent', 'child', S, (0, 0, 0), IDENTITY, 'x')
+    core.set_transform('parent', 'fixed', 0, (0, 0, 1), IDENTITY, 'y', True)
+    assert core.frame_ids() == ['child', 'parent', 'fixed']
+    core.clear()
+    assert core.frame_ids() == ['child', 'parent', 'fixed']
+    assert core.lookup_transform('parent', 'fixed', 5 * S).translation == (0.0, 0.0, 1.0)
+    assert core.all_frames_as_string() == (
+        'Frame child exists with parent NO_PARENT.\nFrame fixed exists with parent parent.\n'
+    )
+
+
+def test_duplicates_and_same_stamp_entries():
+    """Exact duplicates are dropped but succeed; same stamp with new data is kept."""
+    core = BufferCore()
+    assert core.set_transform('p', 'c', S, (1, 0, 0), IDENTITY, 'first')
+    assert core.set_transform('p', 'c', S, (1, 0, 0), IDENTITY, 'second')
+    assert core.frames_info()[0].sample_count == 1
+    assert core.frames_info()[0].authority == 'second'
+    assert core.set_transform('p', 'c', S, (2, 0, 0), IDENTITY)
+    assert core.frames_info()[0].sample_count == 2
+    # Newest-inserted wins at the newest stamp.
+    assert core.lookup_transform('p', 'c', S).translation == (2.0, 0.0, 0.0)
+
+
+def test_reparenting_and_static_overwrite():
+    """A child may change parent over time; a static child is overwritten for all times."""
+    core = BufferCore()
+    core.set_transform('a', 'c', 1 * S, (1, 0, 0), IDENTITY)
+    core.set_transform('b', 'c', 2 * S, (2, 0, 0), IDENTITY)
+    assert core.parent_of('c', S + S // 2) == 'a'
+    assert core.parent_of('c', 2 * S) == 'b'
+    assert core.lookup_transform('a', 'c', S + S // 2).translation == (1.0, 0.0, 0.0)
+    core.set_transform('a', 's', 0, (1, 0, 0), IDENTITY, '', True)
+    core.set_transform('b', 's', 0, (3, 0, 0), IDENTITY, '', True)
+    assert core.parent_of('s', 123) == 'b'
+    assert core.lookup_transform('b', 's', 99 * S).translation == (3.0, 0.0, 0.0)
+
+
+def test_static_dynamic_kind_switch_discards_history():
+    """Switching a child between static and dynamic replaces its cache."""
+    core = BufferCore()
+    core.set_transform('p', 'c', 1 * S, (1, 0, 0), IDENTITY)
+    core.set_transform('p', 'c', 2 * S, (2, 0, 0), IDENTITY)
+    core.set_transform('p', 'c', 0, (5, 0, 0), IDENTITY, '', True)
+    assert core.frames_info()[0].is_static
+    assert core.lookup_transform('p', 'c', 77).translation == (5.0, 0.0, 0.0)
+    core.set_transform('p', 'c', 3 * S, (3, 0, 0), IDENTITY)
+    info = core.frames_info()[0]
+    assert (info.is_static, info.sample_count, info.oldest_ns) == (False, 1, 3 * S)
+
+
+def test_target_equals_source_shortcut():
+    """Identity without validation; stamp is the frame's newest when time is 0."""
+    core = BufferCore()
+    assert core.lookup_transform('zz', 'zz', 0) == ((0, 0, 0), IDENTITY, 0)
+    assert core.lookup_transform('', '', 7).stamp_ns == 7
+    core.set_transform('foo', 'bar', 2 * S, (0, 0, 0), IDENTITY)
+    core.set_transform('foo', 'bar', 3 * S, (0, 0, 0), IDENTITY)
+    assert core.lookup_transform('bar', 'bar', 0).stamp_ns == 3 * S
+    assert core.can_transform('nope', 'nope', 0)
+
+
+def test_frame_validation_texts():
+    """Empty, slash-prefixed and unknown frames raise tf2's exact errors."""
+    core = BufferCore()
+    core.set_transform('foo', 'bar', S, (0, 0, 0), IDENTITY)
+    with pytest.raises(InvalidArgumentException) as info:
+        core.lookup_transform('', 'bar', 0)
+    assert str(info.value) == (
+        'Invalid argument "" passed to lookupTransform argument target_frame - in tf2 '
+        'frame_ids cannot be empty'
+    )
+    with pytest.raises(InvalidArgumentException) as info:
+        core.lookup_transform('foo', '/bar', 0)
+    assert str(info.value) == (
+        'Invalid argument "/bar" passed to lookupTransform argument source_frame - in tf2 '
+        "frame_ids cannot start with a '/'"
+    )
+    with pytest.raises(LookupException) as info:
+        core.lookup_transform('foo', 'baz', 0)
+    assert (
+        str(info.value) == '"baz" passed to lookupTransform argument source_frame does not exist. '
+    )
+    ok, text = core.can_transform('foo', 'baz', 0, return_debug_tuple=True)
+    assert not ok
+    assert text == (
+        'Invalid frame ID "baz" passed to canTransform argument source_frame - frame does not '
+        'exist'
+    )
+    assert core.can_transform('', 'bar', 0, return_debug_tuple=True) == (
+        False,
+        'Invalid frame ID "" passed to canTransform argument target_frame - in tf2 frame_ids '
+        'cannot be empty',
+    )
+
+
+def test_latest_common_time_examples(rep105):
+    """LCT(map,laser)=11, LCT(cam,laser)=12, LCT(cam,map)=11, LCT(odom,map)=0."""
+    assert rep105.get_latest_common_time('map', 'laser') == 11 * S
+    assert rep105.get_latest_common_time('cam', 'laser') == 12 * S
+    assert rep105.get_latest_common_time('cam', 'map') == 11 * S
+    assert rep105.get_latest_common_time('odom', 'map') == 0
+    assert rep105.lookup_transform('odom', 'map', 0).stamp_ns == 0
+    assert rep105.lookup_transform('odom', 'map', 123).stamp_ns == 123
+
+
+def test_links_above_common_ancestor_do_not_count():
+    """root->mid at [1,2], mid->c1/c2 at [5,6]: c1<-c2 works, root<-c2 at 0 fails at LCT 2."""
+    core = BufferCore()
+    for stamp in (1, 2):
+        core.set_transform('root', 'mid', stamp * S, (0, 0, 0), IDENTITY)
+    for stamp in (5, 6):
+        core.set_transform('mid', 'c1', stamp * S, (1, 0, 0), IDENTITY)
+        core.set_transform('mid', 'c2', stamp * S, (0, 1, 0), IDENTITY)
+    assert core.lookup_transform('c1', 'c2', 0).stamp_ns == 6 * S
+    assert core.lookup_transform('c1', 'c2', 5 * S + S // 2).translation == (-1.0, 1.0, 0.0)
+    with pytest.raises(BackwardExtrapolationException) as info:
+        core.lookup_transform('root', 'c2', 0)
+    assert str(info.value) == (
+        'Lookup would require extrapolation into the past.  Requested time 2.000000 but the '
+        'earliest data is at time 5.000000, when looking up transform from frame [c2] to frame '
+        '[root]'
+    )
+
+
+def test_zero_stamped_dynamic_link_is_ignored_by_lct():
+    """A dynamic link stamped 0 plus one at 5 gives LCT 5 and tf2's single-sample failure."""
+    core = BufferCore()
+    core.set_transform('a', 'b', 0, (0, 0, 0), IDENTITY)
+    core.set_transform('b', 'c', 5 * S, (0, 0, 0), IDENTITY)
+    assert core.get_latest_common_time('a', 'c') == 5 * S
+    with pytest.raises(NoDataForExtrapolationException) as info:
+        core.lookup_transform('a', 'c', 0)
+    assert str(info.value).startswith(
+        'Lookup would require extrapolation at time 5.000000, but only time 0.000000 is in the '
+        'buffer'
+    )
+
+
+def test_walk_error_messages():
+    """foo->bar at {2,3}: future, single-sample and post-clear texts and classes."""
+    core = BufferCore()
+    core.set_transform('foo', 'bar', 2 * S, (0, 0, 0), IDENTITY)
+    with pytest.raises(NoDataForExtrapolationException) as info:
+        core.lookup_transform('foo', 'bar', 4 * S)
+    assert str(info.value) == (
+        'Lookup would require extrapolation at time 4.000000, but only time 2.000000 is in the '
+        'buffer' + SUFFIX_BAR_FOO
+    )
+    core.set_transform('foo', 'bar', 3 * S, (0, 0, 0), IDENTITY)
+    with pytest.raises(ForwardExtrapolationException) as info:
+        core.lookup_transform('foo', 'bar', 4 * S)
+    assert str(info.value) == (
+        'Lookup would require extrapolation into the future.  Requested time 4.000000 but the '
+        'latest data is at time 3.000000' + SUFFIX_BAR_FOO
+    )
+    # Target-side failure gives the same suffix (source and target as named in the call).
+    with pytest.raises(ForwardExtrapolationException) as info:
+        core.lookup_transform('bar', 'foo', 4 * S)
+    assert str(info.value).endswith(', when looking up transform from frame [foo] to frame [bar]')
+    core.clear()
+    with pytest.raises(NoDataForExtrapolationException) as info:
+        core.lookup_transform('foo', 'bar', 3 * S)
+    assert str(info.value) == SUFFIX_BAR_FOO
+    with pytest.raises(ConnectivityException):
+        core.lookup_transform('foo', 'bar', 0)
+    assert issubclass(NoDataForExtrapolationException, ExtrapolationException)
+    assert issubclass(ExtrapolationException, TransformException)
+
+
+def test_connectivity_text():
+    """Unconnected trees give tf2's text with no space after 'tree.'."""
+    core = BufferCore()
+    core.set_transform('a', 'b', S, (0, 0, 0), IDENTITY)
+    core.set_transform('c', 'd', S, (0, 0, 0), IDENTITY)
+    with pytest.raises(ConnectivityException) as info:
+        core.lookup_transform('a', 'd', 0)
+    text = (
+        "Could not find a connection between 'a' and 'd' because they are not part of the same "
+        'tree.Tf has two or more unconnected trees.'
+    )
+    assert str(info.value) == text
+    with pytest.raises(ConnectivityException) as info:
+        core.lookup_transform('a', 'd', S)
+    assert str(info.value) == text
+    assert core.can_transform('a', 'd', S, return_debug_tuple=True) == (False, text)
+
+
+def test_loop_is_reported():
+    """A cycle raises LookupException with the loop text followed by the frame list."""
+    core = BufferCore()
+    core.set_transform('a', 'b', S, (0, 0, 0), IDENTITY)
+    core.set_transform('c', 'a', S, (0, 0, 0), IDENTITY)
+    core.set_transform('b', 'c', S, (0, 0, 0), IDENTITY)
+    core.set_transform('x', 'y', S, (0, 0, 0), IDENTITY)
+    with pytest.raises(LookupException) as info:
+        core.lookup_transform('x', 'b', S)
+    assert str(info.value) == (
+        'The tf tree is invalid because it contains a loop.\n'
+        'Frame b exists with parent a.\nFrame a exists with parent c.\n'
+        'Frame c exists with parent b.\nFrame y exists with parent x.\n\n'
+    )
+
+
+def test_harmless_failure_above_meeting_point():
+    """c1<-c2 at 5.5 works although root->mid has no data at 5.5."""
+    core = BufferCore()
+    core.set_transform('root', 'mid', 1 * S, (0, 0, 0), IDENTITY)
+    core.set_transform('root', 'mid', 2 * S, (0, 0, 0), IDENTITY)
+    for stamp in (5, 6):
+        core.set_transform('mid', 'c1', stamp * S, (1, 0, 0), IDENTITY)
+        core.set_transform('mid', 'c2', stamp * S, (0, 1, 0), IDENTITY)
+    assert core.can_transform('c1', 'c2', 5 * S + S // 2)
+    assert core.lookup_transform('c2', 'c1', 5 * S + S // 2).translation == (1.0, -1.0, 0.0)
+
+
+def test_full_lookup_example():
+    """bar at x=2 at 2.5 s and x=3 at 3 s: lookup(bar@3, bar@2.5, fixed=foo) is x=-0.5 @3."""
+    core = BufferCore()
+    core.set_transform('foo', 'bar', 2 * S, (1.0, 0, 0), IDENTITY)
+    core.set_transform('foo', 'bar', 3 * S, (3.0, 0, 0), IDENTITY)
+    result = core.lookup_transform_full('bar', 3 * S, 'bar', 2 * S + S // 2, 'foo')
+    assert result.translation == pytest.approx((-1.0, 0.0, 0.0))
+    assert result.stamp_ns == 3 * S
+    core.set_transform('foo', 'bar', 4 * S, (2.0, 0, 0), IDENTITY)
+    assert core.can_transform_full('bar', 3 * S, 'bar', 2 * S + S // 2, 'foo')
+    ok, text = core.can_transform_full('bar', 9 * S, 'bar', 2 * S, 'foo', True)
+    assert not ok
+    assert 'into the future' in text
+    with pytest.raises(LookupException) as info:
+        core.lookup_transform_full('bar', 0, 'bar', 0, 'nope')
+    assert 'fixed_frame does not exist' in str(info.value)
+
+
+def test_full_lookup_composes_with_rotation():
+    """The fixed-frame result equals target@tt <- fixed composed with fixed <- source@st."""
+    core = BufferCore()
+    q1 = math3d.quat_from_rpy(0.1, 0.2, 0.3)
+    q2 = math3d.quat_from_rpy(-0.4, 0.1, 1.3)
+    core.set_transform('world', 'robot', 1 * S, (1.0, 2.0, 0.0), q1)
+    core.set_transform('world', 'robot', 2 * S, (3.0, -1.0, 0.5), q2)
+    result = core.lookup_transform_full('robot', 2 * S, 'robot', 1 * S, 'world')
+    world_t_robot2 = core.lookup_transform('world', 'robot', 2 * S)
+    world_t_robot1 = core.lookup_transform('world', 'robot', 1 * S)
+    inv_t, inv_q = math3d.invert(world_t_robot2.translation, world_t_robot2.rotation)
+    t, q = math3d.compose(inv_t, inv_q, world_t_robot1.translation, world_t_robot1.rotation)
+    assert result.translation == pytest.approx(t, abs=1e-12)
+    assert result.rotation == pytest.approx(q, abs=1e-12)
+
+
+def test_lookup_result_rotation_is_canonical():
+    """As in ROS 2 (tf2::Transform holds a matrix), the result quaternion has w >= 0 here."""
+    core = BufferCore()
+    half = math.radians(170) / 2
+    q = (0.0, 0.0, math.sin(half), math.cos(half))
+    core.set_transform('a', 'b', S, (0, 0, 0), q)
+    core.set_transform('b', 'c', S, (0, 0, 0), q)
+    rotation = core.lookup_transform('a', 'c', 0).rotation
+    assert rotation == pytest.approx(
+        (0.0, 0.0, -math.sin(math.radians(20) / 2), math.cos(math.radians(20) / 2))
+    )
+
+
+def test_chain_examples(rep105):
+    """tf2's _chainAsVector quirks, the four verified outputs of spec §3.8."""
+    assert rep105.chain('map', 0, 'laser', 0, 'map') == ['laser', 'base', 'odom']
+    assert rep105.chain('laser', 0, 'map', 0, 'laser') == ['map', 'odom', 'base', 'laser']
+    assert rep105.chain('laser', 0, 'cam', 0, 'laser') == ['laser']
+    assert rep105.chain('laser', 11 * S, 'cam', 0, 'map') == [
+        'cam',
+        'map',
+        'odom',
+        'base',
+        'laser',
+    ]
+
+
+def test_introspection_helpers(rep105):
+    """frame_exists, frame_ids, parent_of and frames_info report the buffer's contents."""
+    assert rep105.frame_exists('map')
+    assert rep105.frame_exists('NO_PARENT')
+    assert not rep105.frame_exists('nope')
+    assert rep105.frame_ids() == ['odom', 'map', 'base', 'laser', 'cam']
+    assert rep105.parent_of('laser') == 'base'
+    assert rep105.parent_of('map') is None
+    assert rep105.parent_of('base', 99 * S) is None
+    infos = {info.child: info for info in rep105.frames_info()}
+    assert infos['laser'][1:] == ('base', 'c', False, 5 * S, 12 * S, 2)
+    assert infos['odom'][1:] == ('map', 'a', True, 0, 0, 1)
+
+
+def test_lookup_velocity_translation_and_rotation():
+    """Pure translation at 2 m/s and pure yaw at 0.5 rad/s come back as that twist."""
+    core = BufferCore()
+    for step in range(11):
+        t = step / 10
+        q = math3d.quat_from_rpy(0.0, 0.0, 0.5 * t)
+        core.set_transform('odom', 'mover', step * S // 10, (2.0 * t, 0.0, 0.0), IDENTITY)
+        core.set_transform('odom', 'spinner', step * S // 10, (0.0, 0.0, 0.0), q)
+    linear, angular = core.lookup_velocity('mover', 'odom', S // 2, S // 10)
+    assert linear == pytest.approx((2.0, 0.0, 0.0), abs=1e-6)
+    assert angular == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
+    linear, angular = core.lookup_velocity('spinner', 'odom', S // 2, S // 10)
+    assert linear == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
+    assert angular == pytest.approx((0.0, 0.0, 0.5), abs=1e-6)
+
+
+def test_insert_callbacks_run_after_each_insert():
+    """Callbacks run once per stored transform and can be removed."""
+    core = BufferCore()
+    calls = []
+    handle = core.add_insert_callback(lambda: calls.append(core.frame_ids()))
+    core.set_transform('p', 'c', S, (0, 0, 0), IDENTITY)
+    core.set_transform('p', 'p', S, (0, 0, 0), IDENTITY)
+    assert calls == [['c', 'p']]
+    core.remove_insert_callback(handle)
+    core.set_transform('p', 'c', 2 * S, (0, 0, 0), IDENTITY)
+    assert len(calls) == 1
+
+
+def test_bad_argument_types_are_reported():
+    """Wrong argument shapes raise TypeError naming the problem, not a crash inside the core."""
+    core = BufferCore()
+    with pytest.raises(TypeError, match='translation'):
+        core.set_transform('p', 'c', S, (0, 0), IDENTITY)
+    with pytest.raises(TypeError, match='must be str'):
+        core.set_transform(None, 'c', S, (0, 0, 0), IDENTITY)
+    with pytest.raises(ValueError, match='negative'):
+        BufferCore(-1)
+
+
+def test_batch_lookup_equals_single_lookups(rep105):
+    """lookup_transforms equals N single lookups, including time 0 and interior stamps."""
+    rep105.set_transform(
+        'base', 'laser', 8 * S, (0.3, 0.1, 1.5), math3d.quat_from_rpy(0.1, 0.2, 0.3)
+    )
+    times = np.array([0, 10 * S, 10 * S + 123456789, 11 * S, 10 * S + S // 3], dtype=np.int64)
+    for target, source in (('map', 'laser'), ('laser', 'cam'), ('cam', 'map'), ('laser', 'laser')):
+        translations, rotations = rep105.lookup_transforms(target, source, times)
+        for row, stamp in enumerate(times.tolist()):
+            single = rep105.lookup_transform(target, source, stamp)
+            assert translations[row] == pytest.approx(single.translation, abs=1e-9)
+            assert rotations[row] == pytest.approx(single.rotation, abs=1e-9)
+
+
+def test_batch_lookup_raises_first_failure(rep105):
+    """The batch raises what the first failing single lookup raises."""
+    times = np.array([10 * S, 13 * S, 1 * S], dtype=np.int64)
+    with pytest.raises(ForwardExtrapolationException) as info:
+        rep105.lookup_transforms('map', 'laser', times)
+    with pytest.raises(ForwardExtrapolationException) as single:
+        rep105.lookup_transform('map', 'laser', 13 * S)
+    assert str(info.value) == str(single.value)
+    with pytest.raises(LookupException):
+        rep105.lookup_transforms('map', 'nope', times)

@@ -1,0 +1,240 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""TimeCache and StaticCache, reproducing tf2's cache_unittest and spec/tf2.md §2."""
+
+from __future__ import annotations
+
+import math
+import random
+
+import pytest
+from tf_demo.core import math3d
+from tf_demo.core.time_cache import display_time_point
+from tf_demo.core.time_cache import ERROR_BACKWARD_EXTRAPOLATION
+from tf_demo.core.time_cache import ERROR_FORWARD_EXTRAPOLATION
+from tf_demo.core.time_cache import ERROR_NO_DATA_FOR_EXTRAPOLATION
+from tf_demo.core.time_cache import StaticCache
+from tf_demo.core.time_cache import TimeCache
+
+S = 1_000_000_000
+IDENTITY = (0.0, 0.0, 0.0, 1.0)
+
+
+def _values(x=0.0, y=0.0, z=0.0, q=IDENTITY):
+    return (float(x), float(y), float(z), *q)
+
+
+def _stamps(cache):
+    return [item.stamp_ns for item in cache.items()]
+
+
+def test_repeatability_in_and_reverse_order():
+    """Every inserted sample comes back exactly at its own stamp, whatever the insert order."""
+    for order in (range(1, 101), range(100, 0, -1)):
+        cache = TimeCache(10 * S)
+        for i in order:
+            cache.insert(i, _values(i), i)
+        for i in range(1, 101):
+            sample = cache.get_data(i)
+            assert sample is not None
+            assert sample[0] == i
+            assert sample[7] == i
+        assert len(cache) == 100
+
+
+def test_time_zero_returns_newest():
+    """Time 0 means the newest sample."""
+    cache = TimeCache(10 * S)
+    for i in (5, 9, 2):
+        cache.insert(i, _values(i), 1)
+    assert cache.get_data(0)[0] == 9
+
+
+def test_get_all_items_order_and_pruning():
+    """tf2's GetAllItems: newest first, ties reverse-inserted, then pruning and rejection."""
+    cache = TimeCache(10)
+    labels = {}
+    for stamp, label in ((0, 0), (10, 10), (5, 5), (3, 3), (8, 81), (8, 82), (8, 83)):
+        assert cache.insert(stamp, _values(label), 1)
+        labels[label] = stamp
+    order = [int(item.translation[0]) for item in cache.items()]
+    assert order == [10, 83, 82, 81, 5, 3, 0]
+    for stamp, label in ((0, 0), (10, 10), (5, 5), (3, 3), (8, 81), (8, 82), (8, 83)):
+        assert cache.insert(stamp, _values(label), 1)
+    assert [int(item.translation[0]) for item in cache.items()] == order
+    assert cache.insert(15, _values(15), 1)
+    assert not cache.insert(0, _values(1000), 1)
+    assert cache.insert(5, _values(55), 1)
+    order = [int(item.translation[0]) for item in cache.items()]
+    assert order == [15, 10, 83, 82, 81, 55, 5]
+
+
+def test_pruning_lags_one_insert():
+    """Cache 2 s, stamps 0..10 inserted in order: 7, 8, 9 and 10 remain."""
+    cache = TimeCache(2 * S)
+    for second in range(11):
+        assert cache.insert(second * S, _values(second), 1)
+    assert _stamps(cache) == [10 * S, 9 * S, 8 * S, 7 * S]
+    assert cache.oldest_stamp_ns == 7 * S
+
+
+def test_rejection_threshold_is_strict():
+    """Exactly newest - cache_time is accepted; one nanosecond older is rejected."""
+    cache = TimeCache(2 * S)
+    cache.insert(10 * S, _values(), 1)
+    assert cache.insert(8 * S, _values(1), 1)
+    assert not cache.insert(8 * S - 1, _values(2), 1)
+
+
+def test_exact_duplicate_dropped_same_stamp_different_data_kept():
+    """Exact duplicates are dropped silently (still True); different data at a stamp is kept."""
+    cache = TimeCache(10 * S)
+    assert cache.insert(S, _values(1), 1)
+    assert cache.insert(S, _values(1), 1)
+    assert len(cache) == 1
+    assert cache.insert(S, _values(2), 1)
+    assert cache.insert(S, _values(1), 2)
+    assert len(cache) == 3
+
+
+def test_tie_breaking_latest_oldest_interior():
+    """Newest stamp -> newest-inserted, oldest -> first-inserted, interior uses newest-inserted."""
+    cache = TimeCache(10 * S)
+    cache.insert(S, _values(1), 1)
+    cache.insert(S, _values(2), 1)
+    cache.insert(2 * S, _values(3), 1)
+    cache.insert(2 * S, _values(4), 1)
+    cache.insert(3 * S, _values(5), 1)
+    cache.insert(3 * S, _values(6), 1)
+    assert cache.get_data(3 * S)[0] == 6
+    assert cache.get_data(S)[0] == 1
+    # Interior: older neighbour is the newest-inserted at 2 s, so ratio 0 gives 4.
+    assert cache.get_data(2 * S)[0] == 4
+    # Between 2 s and 3 s: from the newest-inserted at 2 s (4) to the first-inserted at 3 s (5).
+    assert cache.get_data(2 * S + S // 2)[0] == pytest.approx(4.5)
+
+
+def test_cartesian_interpolation():
+    """Translation is interpolated linearly between the neighbours."""
+    rng = random.Random(1)
+    for _ in range(50):
+        cache = TimeCache(10 * S)
+        a = [rng.uniform(-10, 10) for _ in range(3)]
+        b = [rng.uniform(-10, 10) for _ in range(3)]
+        cache.insert(S, _values(*a), 1)
+        cache.insert(2 * S, _values(*b), 1)
+        for step in range(11):
+            t = S + step * S // 10
+            sample = cache.get_data(t)
+            ratio = step / 10
+            for axis in range(3):
+                expected = (1 - ratio) * a[axis] + ratio * b[axis]
+                assert sample[axis] == pytest.approx(expected, abs=1e-9)
+
+
+def test_angular_interpolation_is_slerp():
+    """Rotation is tf2's slerp between the neighbours."""
+    cache = TimeCache(10 * S)
+    q0 = math3d.quat_from_rpy(0.1, 0.2, 0.3)
+    q1 = math3d.quat_from_rpy(-0.5, 0.4, 2.0)
+    cache.insert(0 + 10, _values(q=q0), 1)
+    cache.insert(10 + S, _values(q=q1), 1)
+    sample = cache.get_data(10 + S // 4)
+    assert sample[3:7] == pytest.approx(math3d.slerp(q0, q1, 0.25), abs=1e-12)
+
+
+def test_no_interpolation_across_parent_change():
+    """tf2's ReparentingInterpolationProtection: the older sample is returned unchanged."""
+    cache = TimeCache(10 * S)
+    cache.insert(S, _values(1), 1)
+    cache.insert(2 * S, _values(2), 2)
+    sample = cache.get_data(S + S // 2)
+    assert sample[0] == 1.0
+    assert sample[7] == 1
+    assert cache.get_parent(S + S // 2) == 1
+    assert cache.get_parent(2 * S) == 2
+
+
+def test_failure_messages_and_codes():
+    """Empty, single-sample, future and past failures give tf2's codes and texts."""
+    cache = TimeCache(10 * S)
+    assert cache.get_data(S) is None
+    assert cache.explain_failure(S) == (ERROR_NO_DATA_FOR_EXTRAPOLATION, '')
+    cache.insert(2 * S, _values(), 1)
+    assert cache.get_data(4 * S) is None
+    assert cache.explain_failure(4 * S) == (
+        ERROR_NO_DATA_FOR_EXTRAPOLATION,
+        'Lookup would require extrapolation at time 4.000000, but only time 2.000000 is in the '
+        'buffer',
+    )
+    cache.insert(3 * S, _values(), 1)
+    assert cache.get_data(4 * S) is None
+    assert cache.explain_failure(4 * S) == (
+        ERROR_FORWARD_EXTRAPOLATION,
+        'Lookup would require extrapolation into the future.  Requested time 4.000000 but the '
+        'latest data is at time 3.000000',
+    )
+    assert cache.get_data(1 * S) is None
+    assert cache.explain_failure(1 * S) == (
+        ERROR_BACKWARD_EXTRAPOLATION,
+        'Lookup would require extrapolation into the past.  Requested time 1.000000 but the '
+        'earliest data is at time 2.000000',
+    )
+    assert cache.get_parent(4 * S) == 0
+
+
+def test_latest_time_and_parent_and_clear():
+    """latest_time_and_parent gives the front entry, (0, 0) when empty; clear empties."""
+    cache = TimeCache(10 * S)
+    assert cache.latest_time_and_parent() == (0, 0)
+    cache.insert(S, _values(), 4)
+    cache.insert(3 * S, _values(), 5)
+    assert cache.latest_time_and_parent() == (3 * S, 5)
+    assert (cache.latest_stamp_ns, cache.oldest_stamp_ns) == (3 * S, S)
+    cache.clear()
+    assert len(cache) == 0
+    assert cache.latest_time_and_parent() == (0, 0)
+
+
+def test_lazy_pruning_compacts_and_stays_correct():
+    """A long stream keeps only the window and still answers every retained stamp exactly."""
+    cache = TimeCache(S)
+    for i in range(5000):
+        cache.insert(i * S // 100, _values(i), 1)
+    assert len(cache) == 102
+    for i in range(4900, 5000):
+        assert cache.get_data(i * S // 100)[0] == i
+
+
+def test_static_cache_answers_any_time():
+    """StaticCache returns its single sample at any time and survives clear()."""
+    cache = StaticCache()
+    cache.insert(123, _values(1), 7)
+    cache.insert(5, _values(2), 8)
+    assert cache.get_data(999 * S)[0] == 2
+    assert cache.get_parent(1) == 8
+    assert cache.latest_time_and_parent() == (0, 8)
+    assert len(cache) == 1
+    cache.clear()
+    assert cache.get_data(0)[0] == 2
+
+
+def test_display_time_point():
+    """displayTimePoint prints six decimals: 1 ns -> 0.000000, -1 ns -> -0.000000."""
+    assert display_time_point(1) == '0.000000'
+    assert display_time_point(-1) == '-0.000000'
+    assert display_time_point(1_500_000_000) == '1.500000'
+    assert display_time_point(1_700_000_000_123_456_789) == '1700000000.123457'
+    assert math.isclose(float(display_time_point(-2_500_000_000)), -2.5)
