@@ -1,0 +1,98 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+A test peer that publishes a tf scenario given as JSON (faults included), until SIGINT/SIGTERM.
+
+Each entry: ``{"parent", "child", "t": [x, y, z], "q": [x, y, z, w], "static": bool,
+"group": name, "rate": Hz, "stamp_offset": seconds, "zero_stamp": bool, "values": [[x, y, z],
+...]}``. Static entries of one ``group`` share a latched broadcaster (a separate node per group,
+so two groups are two publishers); dynamic entries are sent at ``rate`` with stamp now +
+``stamp_offset`` and cycle through ``values`` when given. Prints ``ready`` once everything was
+sent the first time.
+"""
+
+import json
+import signal
+import sys
+import time
+
+from tf_demo import transport
+from tf_demo.msgs.convert import fill_transform_stamped
+from tf_demo.ros import StaticTransformBroadcaster
+from tf_demo.ros import TransformBroadcaster
+from tf_demo.transport.messages import geometry_msgs
+
+
+def main():
+    spec = json.loads(sys.argv[1])
+    stop = []
+    signal.signal(signal.SIGTERM, lambda *_: stop.append(1))
+    signal.signal(signal.SIGINT, lambda *_: stop.append(1))
+    transport.init(args=['tf_fault_peer'])
+    nodes = {}
+    static_broadcasters = {}
+    dynamic_broadcasters = {}
+
+    def node_for(group):
+        if group not in nodes:
+            nodes[group] = transport.create_node(f'tf_fault_peer_{group}')
+        return nodes[group]
+
+    def message(entry, stamp_ns, translation):
+        msg = geometry_msgs.TransformStamped()
+        rotation = tuple(entry.get('q', (0.0, 0.0, 0.0, 1.0)))
+        fill_transform_stamped(
+            msg, entry['parent'], entry['child'], stamp_ns, tuple(translation), rotation
+        )
+        return msg
+
+    dynamic = []
+    for entry in spec:
+        group = entry.get('group', 'main')
+        if entry.get('static', False):
+            if group not in static_broadcasters:
+                static_broadcasters[group] = StaticTransformBroadcaster(node_for(group))
+            now = node_for(group).get_clock().now().nanoseconds
+            static_broadcasters[group].send_transform(
+                message(entry, now, entry.get('t', [0, 0, 0]))
+            )
+        else:
+            if group not in dynamic_broadcasters:
+                dynamic_broadcasters[group] = TransformBroadcaster(node_for(group))
+            dynamic.append(entry)
+    print('ready', flush=True)
+    next_due = [0.0] * len(dynamic)
+    counts = [0] * len(dynamic)
+    while not stop:
+        now_wall = time.monotonic()
+        for index, entry in enumerate(dynamic):
+            if now_wall < next_due[index]:
+                continue
+            next_due[index] = now_wall + 1.0 / entry.get('rate', 20.0)
+            group = entry.get('group', 'main')
+            now = nodes[group].get_clock().now().nanoseconds
+            stamp = 0 if entry.get('zero_stamp') else now + int(entry.get('stamp_offset', 0) * 1e9)
+            values = entry.get('values') or [entry.get('t', [0, 0, 0])]
+            translation = values[counts[index] % len(values)]
+            counts[index] += 1
+            dynamic_broadcasters[group].send_transform(message(entry, stamp, translation))
+        time.sleep(0.005)
+    for node in nodes.values():
+        node.destroy_node()
+    transport.shutdown()
+
+
+if __name__ == '__main__':
+    main()
