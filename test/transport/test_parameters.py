@@ -190,3 +190,35 @@ def test_automatically_declared_overrides() -> None:
         {'x': Parameter('x', value=1.5)}, automatically_declare_parameters_from_overrides=True
     )
     assert store.get_parameter('x').value == 1.5
+
+
+@pytest.mark.dds
+def test_standalone_node_takes_overrides_from_init_and_its_own_arguments(
+    dds_env: dict[str, str], tmp_path: Path
+) -> None:
+    """A DDS node sees -p from init, its params-file entry and its cli_args (last wins)."""
+    from tf_demo import transport
+
+    params = tmp_path / 'params.yaml'
+    params.write_text(
+        '/robot/talker:\n  ros__parameters:\n    rate: 2.0\n    frame: odom\n', encoding='utf-8'
+    )
+    transport.init(['prog', '--ros-args', '-p', 'rate:=1.0', '--params-file', str(params)])
+    try:
+        node = transport.create_node(
+            'talker', namespace='/robot', cli_args=['--ros-args', '-p', 'frame:=map']
+        )
+        assert node.declare_parameter('rate', 0.5).value == 2.0
+        assert node.declare_parameter('frame', 'base').value == 'map'
+        rejected = []
+
+        def reject_all(parameters: list[Parameter]) -> SetParametersResult:
+            rejected.extend(p.name for p in parameters)
+            return SetParametersResult(successful=False, reason='frozen')
+
+        node.add_on_set_parameters_callback(reject_all)
+        [result] = node.set_parameters([Parameter('rate', value=3.0)])
+        assert (result.successful, result.reason, rejected) == (False, 'frozen', ['rate'])
+        assert node.get_parameter('rate').value == 2.0
+    finally:
+        transport.shutdown()
