@@ -214,3 +214,20 @@ def test_snapshot_observations():
     )
     findings = diagnose(observations_from_snapshot(snapshot), check_timing=False)
     assert kinds(findings) == ['disconnected']
+
+
+def test_leading_slash_frames():
+    """Frames published with a leading '/' are an error with the fixed name."""
+    findings = diagnose([static('map', '/odom')])
+    finding = next(f for f in findings if f.kind == 'leading_slash')
+    assert finding.frames == ('/odom',)
+    assert "'odom' instead of '/odom'" in finding.fix
+
+
+def test_stopped_stream():
+    """A stream that stops long before the recording ends is reported as stopped."""
+    stopped = stream('odom', 'base_link', seconds=1.0)
+    later = stream('map', 'odom', seconds=4.0)
+    finding = next(f for f in diagnose(stopped + later) if f.kind == 'stopped')
+    assert finding.frames == ('base_link',)
+    assert 'stopped arriving 3.000 s' in finding.message

@@ -273,8 +273,10 @@ def diagnose(
         )
     findings.extend(_disconnected(parent_of, frames))
     findings.extend(_rep105(parent_of))
+    findings.extend(_leading_slashes(known))
     if check_timing:
         findings.extend(_timing(stats, listen_ns, limits))
+        findings.extend(_stopped(stats, max(o.receive_ns for o in observations)))
     order = {'error': 0, 'warning': 1, 'info': 2}
     findings.sort(key=lambda f: order[f.severity])
     return findings
@@ -574,6 +576,50 @@ def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -
                     'and will extrapolate into the future for up to that long.',
                     'Publish faster, look up at time 0 (latest available) or with a timeout, or '
                     'interpolate at the stamp of the data you transform.',
+                )
+            )
+    return findings
+
+
+def _leading_slashes(known: set[str]) -> list[Finding]:
+    slashed = sorted(frame for frame in known if frame.startswith('/'))
+    if not slashed:
+        return []
+    return [
+        Finding(
+            'leading_slash',
+            'error',
+            tuple(slashed),
+            f"Frame ids {', '.join(repr(f) for f in slashed)} start with '/'. tf2 in ROS 2 "
+            'refuses such ids in lookups ("frame_ids cannot start with a \'/\'"), so nothing '
+            'can be looked up through them.',
+            "Drop the leading '/' where these frames are published (a ROS 1 habit): "
+            f"'{slashed[0].lstrip('/')}' instead of '{slashed[0]}'.",
+        )
+    ]
+
+
+def _stopped(stats: dict[str, _ChildStats], end_ns: int) -> list[Finding]:
+    """Dynamic frames whose messages stopped well before the end of the recording."""
+    findings = []
+    for child in sorted(stats):
+        samples = stats[child].dynamic
+        if len(samples) < 3:
+            continue
+        receives = [receive for receive, _, _, _ in samples]
+        period = statistics.median(b - a for a, b in itertools.pairwise(receives))
+        silence = end_ns - receives[-1]
+        if silence > max(NS_PER_S, 5 * period):
+            findings.append(
+                Finding(
+                    'stopped',
+                    'warning',
+                    (child,),
+                    f'{stats[child].latest_parent}→{child} stopped arriving '
+                    f'{_seconds(silence)} before the end of the recording (it came every '
+                    f'{_seconds(period)} before). Lookups at later times will fail with '
+                    'extrapolation errors.',
+                    'Check that its publisher is still running and not blocked.',
                 )
             )
     return findings
