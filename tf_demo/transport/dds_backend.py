@@ -927,7 +927,7 @@ def create_node(node_name: str, **kwargs: Any) -> DdsNode:
 # Executors
 # --------------------------------------------------------------------------------------------
 
-_IDLE_WAIT_NS = 1_000_000_000
+_IDLE_WAIT_NS = 200_000_000
 _SIM_TIME_MAX_WAIT_NS = 10_000_000
 
 
