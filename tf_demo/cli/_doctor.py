@@ -77,6 +77,7 @@ class Thresholds:
     future_tolerance_s: float = 0.5
     old_tolerance_s: float = 5.0
     max_gap_s: float = 0.5
+    """A dynamic frame whose stamps are typically further apart is sparse (< 2 Hz)."""
     value_tolerance: float = 1e-9
 
 
@@ -564,14 +565,14 @@ def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -
             )
             continue
         gaps = [b - a for a, b in itertools.pairwise(stamps)]
-        if gaps and max(gaps) > limits.max_gap_s * NS_PER_S:
+        if gaps and statistics.median(gaps) > limits.max_gap_s * NS_PER_S:
             rate = (len(stamps) - 1) / ((stamps[-1] - stamps[0]) / NS_PER_S)
             findings.append(
                 Finding(
                     'sparse_data',
                     'warning',
                     (child,),
-                    f'{parent}→{child} arrives at {rate:.3g} Hz with gaps up to '
+                    f'{parent}→{child} arrives at {rate:.3g} Hz, with gaps up to '
                     f'{_seconds(max(gaps))}. Lookups at now() need data newer than the request '
                     'and will extrapolate into the future for up to that long.',
                     'Publish faster, look up at time 0 (latest available) or with a timeout, or '
@@ -609,7 +610,7 @@ def _stopped(stats: dict[str, _ChildStats], end_ns: int) -> list[Finding]:
         receives = [receive for receive, _, _, _ in samples]
         period = statistics.median(b - a for a, b in itertools.pairwise(receives))
         silence = end_ns - receives[-1]
-        if silence > max(NS_PER_S, 5 * period):
+        if silence > max(2 * NS_PER_S, 5 * period):
             findings.append(
                 Finding(
                     'stopped',
