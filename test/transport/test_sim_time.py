@@ -14,6 +14,10 @@
 
 """use_sim_time: a /clock publisher over real DDS drives node.get_clock().now()."""
 
+from pathlib import Path
+import signal
+import subprocess
+import sys
 import time
 
 import pytest
@@ -22,6 +26,7 @@ from tf_demo.transport.clock import ClockType
 from tf_demo.transport.clock import Time
 from tf_demo.transport.messages import builtin_interfaces
 from tf_demo.transport.messages import rosgraph_msgs
+from tf_demo.transport.messages import std_msgs
 from tf_demo.transport.parameters import Parameter
 
 pytestmark = pytest.mark.dds
@@ -95,3 +100,68 @@ def test_without_use_sim_time_clock_messages_are_ignored(dds_env: dict[str, str]
         assert node.get_clock().now().nanoseconds > 1_600_000_000 * 10**9
     finally:
         transport.shutdown()
+
+
+STAMP_REPORTER = """
+import sys
+from tf_demo.transport import Node, run_node
+from tf_demo.transport.messages import std_msgs
+
+
+class StampReporter(Node):
+    def __init__(self):
+        super().__init__('stamp_reporter')
+        self.publisher = self.create_publisher(std_msgs.String, 'stamps', 100)
+        self.timer = self.create_timer(0.5, self.report)
+
+    def report(self):
+        self.publisher.publish(std_msgs.String(data=str(self.get_clock().now().nanoseconds)))
+
+
+sys.exit(run_node(StampReporter))
+"""
+
+
+def test_node_process_with_use_sim_time_reports_clock_topic_time(
+    dds_env: dict[str, str], tmp_path: Path
+) -> None:
+    """A node process started with use_sim_time:=true stamps with /clock time, not wall time."""
+    script = tmp_path / 'reporter.py'
+    script.write_text(STAMP_REPORTER, encoding='utf-8')
+    transport.init(['test'])
+    process = subprocess.Popen(
+        [sys.executable, str(script), '--ros-args', '-p', 'use_sim_time:=true'],
+        env=dds_env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        simulator = transport.create_node('simulator')
+        clock_publisher = simulator.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
+        stamps: list[int] = []
+        simulator.create_subscription(
+            std_msgs.String, 'stamps', lambda msg: stamps.append(int(msg.data)), 100
+        )
+        executor = transport.SingleThreadedExecutor()
+        executor.add_node(simulator)
+        sim_ns = 1000 * 10**9
+
+        def advance() -> None:
+            nonlocal sim_ns
+            sim_ns += 50_000_000
+            sec, nanosec = divmod(sim_ns, 10**9)
+            clock_publisher.publish(
+                rosgraph_msgs.Clock(clock=builtin_interfaces.Time(sec=sec, nanosec=nanosec))
+            )
+
+        assert spin_until(executor, lambda: len(stamps) >= 3, advance, limit_s=60.0)
+        assert all(1000 * 10**9 < stamp <= sim_ns for stamp in stamps), stamps
+        assert stamps == sorted(stamps)
+    finally:
+        process.send_signal(signal.SIGINT)
+        try:
+            _, stderr = process.communicate(timeout=20)
+        finally:
+            transport.shutdown()
+    assert process.returncode == 0, stderr
