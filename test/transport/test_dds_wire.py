@@ -46,7 +46,7 @@ def test_domain_id_defaults_to_zero_and_rejects_garbage():
     """ROS_DOMAIN_ID: unset means 0, numbers are used as is, garbage is a clear error."""
     assert dds_wire.domain_id_from_env({}) == 0
     assert dds_wire.domain_id_from_env({'ROS_DOMAIN_ID': '42'}) == 42
-    with pytest.raises(dds_wire.DdsWireError, match=r"ROS_DOMAIN_ID='abc' is not a valid"):
+    with pytest.raises(dds_wire.DdsConfigError, match=r"ROS_DOMAIN_ID='abc' is not a valid"):
         dds_wire.domain_id_from_env({'ROS_DOMAIN_ID': 'abc'})
     with pytest.raises(dds_wire.DdsWireError, match=r'0\.\.232'):
         dds_wire.domain_id_from_env({'ROS_DOMAIN_ID': '300'})
@@ -281,3 +281,11 @@ def test_one_topic_cannot_carry_two_types(wire):
     wire.create_writer('rt/typed', TF_TYPE, dds_wire.EndpointQos(), b'')
     with pytest.raises(dds_wire.DdsWireError, match='std_msgs::msg::dds_::String_'):
         wire.create_writer('rt/typed', 'std_msgs::msg::dds_::String_', dds_wire.EndpointQos(), b'')
+
+
+@pytest.mark.dds
+def test_unusable_cyclonedds_uri_is_a_config_error_naming_it(dds_env):
+    """A CYCLONEDDS_URI that Cyclone rejects gives a ValueError quoting it, not a crash."""
+    env = dict(dds_env, CYCLONEDDS_URI='<CycloneDDS><Domain><Bogus/></Domain></CycloneDDS>')
+    with pytest.raises(ValueError, match='cannot create the DDS participant .*Bogus'):
+        dds_wire.DdsParticipant(env)

@@ -51,6 +51,7 @@ from cyclonedds import _clayer
 from cyclonedds.builtin import BuiltinDataReader
 from cyclonedds.builtin import BuiltinTopicDcpsPublication
 from cyclonedds.builtin import BuiltinTopicDcpsSubscription
+from cyclonedds.core import DDSException
 from cyclonedds.core import InstanceState
 from cyclonedds.core import Listener as _CycloneListener
 from cyclonedds.core import ReadCondition
@@ -70,6 +71,7 @@ __all__ = [
     'DISCOVERY_INFO_TOPIC',
     'DISCOVERY_INFO_TYPE',
     'LOOPBACK_DISCOVERY_XML',
+    'DdsConfigError',
     'DdsParticipant',
     'DdsWireError',
     'DiscoveryConfig',
@@ -114,6 +116,10 @@ class DdsWireError(RuntimeError):
     """A DDS entity could not be created or used; the message says which and why."""
 
 
+class DdsConfigError(DdsWireError, ValueError):
+    """The DDS environment (``ROS_DOMAIN_ID``, ``CYCLONEDDS_URI``, ...) is unusable."""
+
+
 # --------------------------------------------------------------------------------------------
 # Domain and discovery configuration (pure)
 # --------------------------------------------------------------------------------------------
@@ -123,7 +129,7 @@ def domain_id_from_env(env: Mapping[str, str]) -> int:
     """
     Return the DDS domain id from ``ROS_DOMAIN_ID`` as rcl reads it (default 0).
 
-    :raises DdsWireError: when the value is not a non-negative integer that Cyclone accepts.
+    :raises DdsConfigError: when the value is not an integer that Cyclone accepts.
     """
     text = env.get('ROS_DOMAIN_ID', '').strip()
     if not text:
@@ -134,7 +140,7 @@ def domain_id_from_env(env: Mapping[str, str]) -> int:
         value = -1
     if not 0 <= value <= 232:
         msg = f'ROS_DOMAIN_ID={text!r} is not a valid domain id (expected an integer 0..232)'
-        raise DdsWireError(msg)
+        raise DdsConfigError(msg)
     return value
 
 
@@ -663,10 +669,17 @@ class DdsParticipant:
         for text in self.discovery.warnings:
             warn(text)
         config = cyclone_config(self.discovery, environ.get('CYCLONEDDS_URI'), os.getpid())
-        self._domain = Domain(self.domain_id, config) if config is not None else None
-        self._participant = DomainParticipant(
-            self.domain_id, qos=Qos(Policy.Userdata(b'enclave=/;'))
-        )
+        try:
+            self._domain = Domain(self.domain_id, config) if config is not None else None
+            self._participant = DomainParticipant(
+                self.domain_id, qos=Qos(Policy.Userdata(b'enclave=/;'))
+            )
+        except DDSException as error:
+            msg = (
+                f'cannot create the DDS participant on domain {self.domain_id} '
+                f'(CYCLONEDDS_URI={environ.get("CYCLONEDDS_URI")!r}): {error}'
+            )
+            raise DdsConfigError(msg) from error
         self.handle: int = self._participant._ref
         self.guid = _entity_guid(self.handle)
         self._lock = threading.Lock()
