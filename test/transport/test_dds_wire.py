@@ -287,5 +287,5 @@ def test_one_topic_cannot_carry_two_types(wire):
 def test_unusable_cyclonedds_uri_is_a_config_error_naming_it(dds_env):
     """A CYCLONEDDS_URI that Cyclone rejects gives a ValueError quoting it, not a crash."""
     env = dict(dds_env, CYCLONEDDS_URI='<CycloneDDS><Domain><Bogus/></Domain></CycloneDDS>')
-    with pytest.raises(ValueError, match='cannot create the DDS participant .*Bogus'):
+    with pytest.raises(ValueError, match=r'cannot create the DDS participant .*Bogus'):
         dds_wire.DdsParticipant(env)
