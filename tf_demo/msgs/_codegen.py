@@ -60,6 +60,95 @@ def _lowbit(value: int) -> int:
     return _MAX_ALIGN if value == 0 else min(_MAX_ALIGN, value & -value)
 
 
+#: Strings up to this length get their dynamic structs cached (longer ones are rare).
+_MAX_CACHED_STRING = 1024
+#: One item of a run: (struct code, alignment, size).
+Item = tuple[str, int, int]
+
+
+class DynamicStructs:
+    """
+    The structs of one string followed by a run of primitives, by string length and position.
+
+    Where the padding after a string goes depends on the string's length and on where it starts
+    (modulo 8), so the generated code looks the compiled struct up by ``length << 3 | pos & 7``
+    and asks :meth:`make` for the ones it has not seen. A decoder's struct reads the characters,
+    the NUL (checked by the caller) and the run; an encoder's writes the bytes, a NUL and the run.
+    """
+
+    def __init__(self, endian: Endian, items: list[Item], *, decode: bool) -> None:
+        self.endian = endian
+        self.items = tuple(items)
+        self.decode = decode
+        self.cache: dict[int, Any] = {}
+
+    def make(self, length: int, pos: int) -> Any:
+        """
+        Compile, cache and return the entry for a string of ``length`` starting at ``pos``.
+
+        ``length`` is the CDR length (NUL included) for a decoder, the byte count for an
+        encoder. A decoder's entry is ``(unpack_from, size)``, an encoder's the ``pack``.
+        """
+        if self.decode:
+            if length < 1:
+                raise Malformed
+            fmt, end = f'{length - 1}sB', pos - 4 + length
+        else:
+            fmt, end = f'{length}sx', pos - 4 + length + 1
+        for code, alignment, size in self.items:
+            pad = -end % alignment
+            fmt += f'{pad}x{code}' if pad else code
+            end += pad + size
+        compiled = Struct(self.endian + fmt)
+        entry = (compiled.unpack_from, end - (pos - 4)) if self.decode else compiled.pack
+        if length <= _MAX_CACHED_STRING:
+            self.cache[length << 3 | pos & 7] = entry
+        return entry
+
+
+class RunLayouts:
+    """
+    The ``pack`` functions of one encoder run that contains strings, by their lengths.
+
+    The key is ``(len(bytes_1), ..., len(bytes_k), len(out) & 7)``; a string item has the code
+    ``''`` in ``items`` and is written as its bytes plus a NUL (its length is a separate item).
+    """
+
+    def __init__(self, items: list[Item]) -> None:
+        self.items = tuple(items)
+        self.cache: dict[tuple[int, ...], Callable[..., bytes]] = {}
+
+    def make(self, key: tuple[int, ...]) -> Callable[..., bytes]:
+        """Compile, cache and return the ``pack`` for the lengths and position in ``key``."""
+        *lengths, start = key
+        pending = iter(lengths)
+        fmt, end = '<', start - 4
+        for code, alignment, size in self.items:
+            if code:
+                pad = -end % alignment
+                fmt += f'{pad}x{code}' if pad else code
+                end += pad + size
+            else:
+                length = next(pending)
+                fmt += f'{length}sx'
+                end += length + 1
+        pack = Struct(fmt).pack
+        if max(lengths) <= _MAX_CACHED_STRING:
+            self.cache[key] = pack
+        return pack
+
+
+def _known_after(items: list[Item]) -> int:
+    """Return the alignment known after a string of any length followed by ``items``."""
+    known = _MAX_ALIGN
+    for start in range(_MAX_ALIGN):
+        end = start
+        for _, alignment, size in items:
+            end += -end % alignment + size
+        known = min(known, _lowbit(end))
+    return known
+
+
 def min_wire_size(msgtype: str) -> int:
     """Return a lower bound of the encoded size of one ``msgtype``, for sequence count checks."""
     total = 0
@@ -112,6 +201,9 @@ class _Builder:
         self.run_items: list[str] = []
         self.run_size = 0
         self.structs: dict[str, str] = {}
+        # A string whose characters head the pending run (its local name), and the run's items.
+        self.dynamic: str | None = None
+        self.dynamic_items: list[Item] = []
 
     def name(self, prefix: str) -> str:
         """Return a fresh local variable name."""
@@ -147,8 +239,30 @@ class _Builder:
 
     def settle(self) -> None:
         """Account for the flushed run in the known alignment."""
-        self.known = min(self.known, _lowbit(self.run_size))
+        if self.dynamic is not None:
+            self.known = _known_after(self.dynamic_items)
+        else:
+            self.known = min(self.known, _lowbit(self.run_size))
         self.run_format, self.run_items, self.run_size = [], [], 0
+        self.dynamic, self.dynamic_items = None, []
+
+    def add_item(self, code: str, alignment: int, size: int, value: str) -> None:
+        """Append one item (a local to read into, or an expression to write) to the run."""
+        if self.dynamic is not None:
+            self.dynamic_items.append((code, alignment, size))
+        else:
+            self.align(alignment)
+            self.run_format.append(code)
+            self.run_size += size
+        self.run_items.append(value)
+
+    def align(self, alignment: int) -> None:
+        """Make the next item start at a multiple of ``alignment``."""
+        raise NotImplementedError
+
+    def flush(self) -> None:
+        """Emit the pending run."""
+        raise NotImplementedError
 
 
 class _DecoderBuilder(_Builder):
@@ -160,11 +274,26 @@ class _DecoderBuilder(_Builder):
 
     def flush(self) -> None:
         """Emit the pending run as one unpack, then the object constructions waiting for it."""
-        if self.run_items:
-            unpack = self.struct_method(''.join(self.run_format), 'unpack_from')
-            self.emit(f'{", ".join(self.run_items)}, = {unpack}(buf, pos)')
-        if self.run_size:
-            self.emit(f'pos += {self.run_size}')
+        if self.dynamic is not None:
+            length, string = self.dynamic.split(':')
+            structs = DynamicStructs(self.endian, self.dynamic_items, decode=True)
+            cache = self.constant('D', structs.cache)
+            make = self.constant('M', structs.make)
+            unpack, size, raw, nul = (self.name(p) for p in ('u', 'z', 'r', 'n'))
+            self.emit(
+                f'{unpack}, {size} = {cache}.get({length} << 3 | pos & 7) or {make}({length}, pos)'
+            )
+            self.emit(f'{", ".join([raw, nul, *self.run_items])} = {unpack}(buf, pos)')
+            self.emit(f'pos += {size}')
+            self.emit(f'if {nul}:')
+            self.emit('    raise _Malformed')
+            self.emit(f'{string} = {raw}.decode()')
+        else:
+            if self.run_items:
+                unpack = self.struct_method(''.join(self.run_format), 'unpack_from')
+                self.emit(f'{", ".join(self.run_items)}, = {unpack}(buf, pos)')
+            if self.run_size:
+                self.emit(f'pos += {self.run_size}')
         self.settle()
         for line in self.builds:
             self.emit(line)
@@ -172,6 +301,8 @@ class _DecoderBuilder(_Builder):
 
     def align(self, alignment: int) -> None:
         """Make the next read start at a multiple of ``alignment``."""
+        if self.dynamic is not None:
+            self.flush()
         if alignment == 1 or self.pad_run_to(alignment):
             return
         self.flush()
@@ -181,25 +312,16 @@ class _DecoderBuilder(_Builder):
     def primitive(self, base: str) -> str:
         """Read one primitive into a new local; return its name."""
         prim = PRIMITIVES[base]
-        self.align(prim.size)
         var = self.name('v')
-        self.run_format.append(prim.code)
-        self.run_items.append(var)
-        self.run_size += prim.size
+        self.add_item(prim.code, prim.size, prim.size, var)
         return var
 
     def string(self) -> str:
-        """Read one string into a new local; return its name."""
+        """Read one string into a new local; return its name (valid after the next flush)."""
         length = self.primitive('uint32')
         self.flush()
         var = self.name('s')
-        end = self.name('e')
-        self.emit(f'{end} = pos + {length}')
-        self.emit(f'if not {length} or buf[{end} - 1]:')
-        self.emit('    raise _Malformed')
-        self.emit(f'{var} = buf[pos:{end} - 1].decode()')
-        self.emit(f'pos = {end}')
-        self.known = 1
+        self.dynamic = f'{length}:{var}'
         return var
 
     def value(self, field: FieldSpec) -> str:
@@ -297,22 +419,54 @@ class _DecoderBuilder(_Builder):
 
 
 class _EncoderBuilder(_Builder):
-    """Generate ``encode(message) -> bytes`` (little-endian, with the encapsulation header)."""
+    """
+    Generate ``encode(message) -> bytes`` (little-endian, with the encapsulation header).
+
+    A run may hold strings: their bytes go into the same ``pack`` call, through a struct looked
+    up by the strings' lengths and the start position modulo 8 (see :class:`RunLayouts`).
+    """
 
     def __init__(self) -> None:
         super().__init__('<')
+        self.strings: list[str] = []
+        self.layout: list[Item] = []
+
+    def add_item(self, code: str, alignment: int, size: int, value: str) -> None:
+        """Append one item to the run; after a string its padding is left to the run's layout."""
+        if self.strings:
+            self.layout.append((code, alignment, size))
+            self.run_items.append(value)
+            return
+        super().add_item(code, alignment, size, value)
+        self.layout.append((code, alignment, size))
 
     def flush(self) -> None:
         """Emit the pending run as one pack appended to the output."""
+        if self.strings:
+            layouts = RunLayouts(self.layout)
+            cache = self.constant('E', layouts.cache)
+            make = self.constant('M', layouts.make)
+            key = self.name('k')
+            lengths = ''.join(f'len({encoded}), ' for encoded in self.strings)
+            self.emit(f'{key} = ({lengths}len(out) & 7)')
+            self.emit(f'out += ({cache}.get({key}) or {make}({key}))({", ".join(self.run_items)})')
+            tail = self.layout[max(i for i, item in enumerate(self.layout) if not item[0]) + 1 :]
+            self.run_format, self.run_size = [], 0
+            self.run_items, self.layout, self.strings = [], [], []
+            self.known = _known_after(tail)
+            return
         if self.run_items:
             pack = self.struct_method(''.join(self.run_format), 'pack')
             self.emit(f'out += {pack}({", ".join(self.run_items)})')
         elif self.run_size:
             self.emit(f'out += _ZEROS[{self.run_size}]')
         self.settle()
+        self.layout = []
 
     def align(self, alignment: int) -> None:
         """Make the next write start at a multiple of ``alignment``."""
+        if self.strings:
+            self.flush()
         if alignment == 1 or self.pad_run_to(alignment):
             return
         self.flush()
@@ -322,20 +476,16 @@ class _EncoderBuilder(_Builder):
     def primitive(self, base: str, expr: str) -> None:
         """Write one primitive given by the Python expression ``expr``."""
         prim = PRIMITIVES[base]
-        self.align(prim.size)
-        self.run_format.append(prim.code)
-        self.run_items.append(expr)
-        self.run_size += prim.size
+        self.add_item(prim.code, prim.size, prim.size, expr)
 
     def string(self, expr: str) -> None:
-        """Write one string."""
+        """Write one string: uint32 length with the NUL, the bytes, the NUL (all in the run)."""
         encoded = self.name('b')
         self.emit(f'{encoded} = {expr}.encode()')
         self.primitive('uint32', f'len({encoded}) + 1')
-        self.flush()
-        self.emit(f'out += {encoded}')
-        self.emit("out += b'\\x00'")
-        self.known = 1
+        self.strings.append(encoded)
+        self.layout.append(('', 1, 0))
+        self.run_items.append(encoded)
 
     def value(self, field: FieldSpec, expr: str) -> None:
         """Write one element of ``field``'s type."""
@@ -373,10 +523,9 @@ class _EncoderBuilder(_Builder):
             return
         if field.kind == 'array' and field.base in PRIMITIVES:
             prim = PRIMITIVES[field.base]
-            self.align(prim.size)
-            self.run_format.append(f'{field.size}{prim.code}')
-            self.run_items.append(f'*{expr}')
-            self.run_size += field.size * prim.size
+            self.add_item(
+                f'{field.size}{prim.code}', prim.size, field.size * prim.size, f'*{expr}'
+            )
             return
         sequence = self.name('q')
         self.emit(f'{sequence} = {expr}')

@@ -134,27 +134,30 @@ def deserialize(msg_type: type[MessageT] | str | Any, data: bytes | bytearray | 
         raise _diagnose(msgtype, buf, exc) from None
 
 
-_HEADER_AND_LENGTH = Struct('<iII')
-_LENGTH = Struct('<I')
-_POSE = Struct('<7d')
-_HEADER_AND_LENGTH_BE = Struct('>iII')
-_LENGTH_BE = Struct('>I')
-_POSE_BE = Struct('>7d')
 _MIN_TRANSFORM_SIZE = _codegen.min_wire_size('geometry_msgs/msg/TransformStamped')
 
 
-def _tf_transforms(buf: bytes, little: bool) -> list[TransformTuple]:
-    """Decode the transforms of a TFMessage body straight into tuples (fast path)."""
-    if little:
-        header_and_length, length, pose = _HEADER_AND_LENGTH, _LENGTH, _POSE
-    else:
-        header_and_length, length, pose = _HEADER_AND_LENGTH_BE, _LENGTH_BE, _POSE_BE
-    unpack_header, unpack_length, unpack_pose = (
-        header_and_length.unpack_from,
-        length.unpack_from,
-        pose.unpack_from,
-    )
-    (count,) = unpack_length(buf, 4)
+class _TfLayouts:
+    """The structs of the tf fast path for one byte order (see ``DynamicStructs``)."""
+
+    def __init__(self, endian: _codegen.Endian) -> None:
+        self.count = Struct(endian + 'I').unpack_from
+        self.header = Struct(endian + 'iII').unpack_from
+        # parent characters, NUL, padding, child length; then child characters, NUL, padding, pose
+        self.parent = _codegen.DynamicStructs(endian, [('I', 4, 4)], decode=True)
+        self.child = _codegen.DynamicStructs(endian, [('7d', 8, 56)], decode=True)
+
+
+_TF_LAYOUTS = (_TfLayouts('>'), _TfLayouts('<'))
+
+
+def _tf_transforms(buf: bytes) -> list[TransformTuple]:
+    """Decode the transforms of a TFMessage straight into tuples (fast path)."""
+    layouts = _TF_LAYOUTS[buf[1]]
+    unpack_header = layouts.header
+    parent_cache, make_parent = layouts.parent.cache, layouts.parent.make
+    child_cache, make_child = layouts.child.cache, layouts.child.make
+    (count,) = layouts.count(buf, 4)
     if count * _MIN_TRANSFORM_SIZE > len(buf) - 8:
         raise _codegen.Malformed
     pos = 8
@@ -162,23 +165,27 @@ def _tf_transforms(buf: bytes, little: bool) -> list[TransformTuple]:
     append = result.append
     for _ in range(count):
         pos += (4 - pos) & 3
-        sec, nanosec, parent_length = unpack_header(buf, pos)
+        sec, nanosec, length = unpack_header(buf, pos)
         pos += 12
-        end = pos + parent_length
-        if not parent_length or buf[end - 1]:
+        unpack, size = parent_cache.get(length << 3 | pos & 7) or make_parent(length, pos)
+        parent, nul, length = unpack(buf, pos)
+        pos += size
+        if nul:
             raise _codegen.Malformed
-        parent = buf[pos : end - 1].decode()
-        pos = end + ((4 - end) & 3)
-        (child_length,) = unpack_length(buf, pos)
-        pos += 4
-        end = pos + child_length
-        if not child_length or buf[end - 1]:
+        unpack, size = child_cache.get(length << 3 | pos & 7) or make_child(length, pos)
+        child, nul, tx, ty, tz, qx, qy, qz, qw = unpack(buf, pos)
+        pos += size
+        if nul:
             raise _codegen.Malformed
-        child = buf[pos : end - 1].decode()
-        pos = end + ((4 - end) & 7)
-        tx, ty, tz, qx, qy, qz, qw = unpack_pose(buf, pos)
-        pos += 56
-        append((parent, child, sec * 1_000_000_000 + nanosec, (tx, ty, tz), (qx, qy, qz, qw)))
+        append(
+            (
+                parent.decode(),
+                child.decode(),
+                sec * 1_000_000_000 + nanosec,
+                (tx, ty, tz),
+                (qx, qy, qz, qw),
+            )
+        )
     return result
 
 
@@ -194,7 +201,7 @@ def decode_tf_message_transforms(data: bytes | bytearray | memoryview) -> list[T
     buf = data if type(data) is bytes else bytes(data)
     check_header(_TF_MESSAGE, buf)
     try:
-        return _tf_transforms(buf, buf[1] == 1)
+        return _tf_transforms(buf)
     except Exception as exc:
         raise _diagnose(_TF_MESSAGE, buf, exc) from None
 
