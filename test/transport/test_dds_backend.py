@@ -238,3 +238,24 @@ def test_destroyed_node_refuses_new_entities(world):
     node.destroy_node()
     with pytest.raises(RuntimeError, match="node '/ns/gone' was destroyed"):
         node.create_publisher(std_msgs.String, 'x', 1)
+
+
+@pytest.mark.dds
+def test_two_argument_callbacks_get_message_info_with_the_publisher_gid(world):
+    """A (msg, info) callback gets rclpy's MessageInfo keys and the sending writer's GUID."""
+    node = dds_backend.DdsNode('informed')
+    infos: list[dict] = []
+    node.create_subscription(tf2_msgs.TFMessage, '/tf', lambda _msg, info: infos.append(info), 10)
+    first = node.create_publisher(tf2_msgs.TFMessage, '/tf', 10)
+    second = dds_backend.DdsNode('other').create_publisher(tf2_msgs.TFMessage, '/tf', 10)
+    executor = dds_backend.SingleThreadedExecutor()
+    executor.add_node(node)
+    before = time.time_ns()
+    first.publish(one_transform(1.0))
+    second.publish(one_transform(2.0))
+    assert spin_until(executor, lambda: len(infos) == 2)
+    assert {info['publisher_gid'] for info in infos} == {first._writer.guid, second._writer.guid}
+    assert first._writer.guid != second._writer.guid
+    for info in infos:
+        assert before <= info['source_timestamp'] <= info['received_timestamp']
+        assert set(info) >= {'publication_sequence_number', 'reception_sequence_number'}

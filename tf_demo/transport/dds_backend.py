@@ -32,6 +32,7 @@ from collections.abc import Callable
 from collections.abc import Iterable
 from collections.abc import Sequence
 import contextlib
+import inspect
 import re
 import threading
 import time
@@ -46,6 +47,7 @@ from tf_demo.transport.clock import TimeSource
 from tf_demo.transport.qos import QoSProfile
 
 __all__ = [
+    'CallbackGroup',
     'DdsExecutor',
     'DdsNode',
     'DdsPublisher',
@@ -53,7 +55,9 @@ __all__ = [
     'DdsTimer',
     'InvalidNameError',
     'MultiThreadedExecutor',
+    'MutuallyExclusiveCallbackGroup',
     'Node',
+    'ReentrantCallbackGroup',
     'SingleThreadedExecutor',
     'create_node',
     'expand_topic_name',
@@ -398,6 +402,18 @@ class DdsPublisher:
         self._writer.close(flush_timeout_ns=_FLUSH_TIMEOUT_NS)
 
 
+_SEQUENCE_NUMBER_UNSUPPORTED = 2**64 - 1
+"""``RMW_MESSAGE_INFO_SEQUENCE_NUMBER_UNSUPPORTED``: Cyclone does not report sequence numbers."""
+
+
+def _takes_message_info(callback: Callable[..., Any]) -> bool:
+    """Whether ``callback`` takes ``(msg, message_info)``, as rclpy decides it."""
+    try:
+        return len(inspect.signature(callback).parameters) == 2
+    except (TypeError, ValueError):
+        return False
+
+
 class DdsSubscription:
     """A subscription (rclpy ``Subscription`` subset); its callback runs in the executor."""
 
@@ -423,6 +439,7 @@ class DdsSubscription:
 
         self._deserialize = cdr.deserialize
         self._decode_error = cdr.CdrError
+        self.wants_message_info = _takes_message_info(callback)
 
     @property
     def topic(self) -> str:
@@ -438,23 +455,46 @@ class DdsSubscription:
         """Return the number of matched publishers."""
         return int(self._reader.matched_count())
 
-    def take_messages(self) -> list[Any]:
-        """Take waiting samples and decode them; malformed ones are logged and dropped."""
-        payloads = self._reader.take(_TAKE_BATCH)
-        if self.raw:
-            return list(payloads)
-        messages: list[Any] = []
-        for payload in payloads:
-            try:
-                messages.append(self._deserialize(self.msg_type, payload))
-            except (self._decode_error, ValueError) as error:
-                node = self._node_ref()
-                if node is not None:
-                    node.get_logger().error(
-                        f'Dropped a malformed {self.msg_type.__msgtype__} message on '
-                        f"'{self.topic_name}': {error}"
-                    )
-        return messages
+    def take_messages(self) -> list[tuple[Any, dict[str, Any] | None]]:
+        """
+        Take waiting samples and decode them; malformed ones are logged and dropped.
+
+        Each item is ``(message, message_info)``; ``message_info`` (rclpy's ``MessageInfo``
+        keys plus ``publisher_gid``, the writer's 16-byte GUID) is built only for callbacks that
+        take two arguments.
+        """
+        if not self.wants_message_info:
+            payloads = self._reader.take(_TAKE_BATCH)
+            if self.raw:
+                return [(payload, None) for payload in payloads]
+            return [(m, None) for m in (self._decode(p) for p in payloads) if m is not None]
+        received_ns = time.time_ns()
+        items: list[tuple[Any, dict[str, Any] | None]] = []
+        for payload, source_ns, publication_handle in self._reader.take_with_info(_TAKE_BATCH):
+            message = payload if self.raw else self._decode(payload)
+            if message is None:
+                continue
+            info = {
+                'source_timestamp': source_ns,
+                'received_timestamp': received_ns,
+                'publication_sequence_number': _SEQUENCE_NUMBER_UNSUPPORTED,
+                'reception_sequence_number': _SEQUENCE_NUMBER_UNSUPPORTED,
+                'publisher_gid': self._reader.publisher_gid(publication_handle),
+            }
+            items.append((message, info))
+        return items
+
+    def _decode(self, payload: bytes) -> Any:
+        try:
+            return self._deserialize(self.msg_type, payload)
+        except (self._decode_error, ValueError) as error:
+            node = self._node_ref()
+            if node is not None:
+                node.get_logger().error(
+                    f'Dropped a malformed {self.msg_type.__msgtype__} message on '
+                    f"'{self.topic_name}': {error}"
+                )
+            return None
 
     def destroy(self) -> bool:
         """Destroy this subscription (same as ``node.destroy_subscription(self)``)."""
@@ -523,6 +563,23 @@ class DdsTimer:
     def destroy(self) -> None:
         """Cancel the timer for good."""
         self._canceled = True
+
+
+class CallbackGroup:
+    """
+    rclpy's callback group, accepted for compatibility.
+
+    The DDS executors run every callback in the spinning thread, one at a time, which satisfies
+    both group kinds.
+    """
+
+
+class MutuallyExclusiveCallbackGroup(CallbackGroup):
+    """Callbacks of the group never run concurrently (always true here)."""
+
+
+class ReentrantCallbackGroup(CallbackGroup):
+    """Callbacks of the group may run concurrently (they run one at a time here)."""
 
 
 # --------------------------------------------------------------------------------------------
@@ -1041,8 +1098,11 @@ class DdsExecutor:
                 node = subscription._node_ref()
                 if node is None or node._destroyed:
                     continue
-                for message in subscription.take_messages():
-                    self._run_callback(subscription.callback, message)
+                for message, info in subscription.take_messages():
+                    if info is None:
+                        self._run_callback(subscription.callback, message)
+                    else:
+                        self._run_callback(subscription.callback, message, info)
                 ran = True
             if ran or (deadline is not None and time.monotonic() >= deadline):
                 return

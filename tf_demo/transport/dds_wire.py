@@ -51,6 +51,8 @@ from cyclonedds import _clayer
 from cyclonedds.builtin import BuiltinDataReader
 from cyclonedds.builtin import BuiltinTopicDcpsPublication
 from cyclonedds.builtin import BuiltinTopicDcpsSubscription
+from cyclonedds.builtin_types import cqos_to_qos
+from cyclonedds.builtin_types import endpoint_constructor
 from cyclonedds.core import DDSException
 from cyclonedds.core import InstanceState
 from cyclonedds.core import Listener as _CycloneListener
@@ -579,6 +581,7 @@ class RawReader:
         self.read_condition = _check(
             _lib.dds_create_readcondition(handle, _NOT_READ_ANY), 'dds_create_readcondition'
         )
+        self._publisher_gids: dict[int, bytes] = {}
 
     def take(self, max_samples: int = _TAKE_BATCH) -> list[bytes]:
         """Take up to ``max_samples`` payloads (valid data only), oldest first."""
@@ -591,6 +594,33 @@ class RawReader:
                 raise DdsWireError(msg)
             return []
         return [payload for payload, info in samples if info.valid_data]
+
+    def take_with_info(self, max_samples: int = _TAKE_BATCH) -> list[tuple[bytes, int, int]]:
+        """Take payloads with their source timestamp (ns) and publication handle."""
+        if self.handle <= 0:
+            return []
+        samples = _clayer.ddspy_take(self.handle, _ANY_STATE, max_samples)
+        if isinstance(samples, int):
+            if samples < 0:
+                msg = f'dds_take failed (DDS return code {samples})'
+                raise DdsWireError(msg)
+            return []
+        return [
+            (payload, int(info.source_timestamp), int(info.publication_handle))
+            for payload, info in samples
+            if info.valid_data
+        ]
+
+    def publisher_gid(self, publication_handle: int) -> bytes:
+        """Return the 16-byte GUID of the matched writer behind ``publication_handle``."""
+        gid = self._publisher_gids.get(publication_handle)
+        if gid is None:
+            endpoint = _clayer.ddspy_get_matched_publication_data(
+                self.handle, publication_handle, endpoint_constructor, cqos_to_qos
+            )
+            gid = endpoint.key.bytes if hasattr(endpoint, 'key') else bytes(16)
+            self._publisher_gids[publication_handle] = gid
+        return gid
 
     def matched_count(self) -> int:
         """Return the number of currently matched writers."""
