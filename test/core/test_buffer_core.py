@@ -522,3 +522,15 @@ def test_batch_lookup_raises_first_failure(rep105):
     assert str(info.value) == str(single.value)
     with pytest.raises(LookupException):
         rep105.lookup_transforms('map', 'nope', times)
+
+
+def test_single_sample_answers_exactly_at_its_stamp():
+    """One sample answers a lookup at exactly its stamp (and fails one nanosecond later)."""
+    core = BufferCore()
+    core.set_transform('a', 'b', 2 * S, (1.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0), 'x')
+    result = core.lookup_transform('a', 'b', 2 * S)
+    assert result == ((1.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0), 2 * S)
+    translations, _ = core.lookup_transforms('a', 'b', np.array([2 * S]))
+    assert translations.tolist() == [[1.0, 0.0, 0.0]]
+    with pytest.raises(NoDataForExtrapolationException):
+        core.lookup_transform('a', 'b', 2 * S + 1)

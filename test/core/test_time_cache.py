@@ -32,8 +32,8 @@ S = 1_000_000_000
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
 
 
-def _values(x=0.0, y=0.0, z=0.0, q=IDENTITY):
-    return (float(x), float(y), float(z), *q)
+def _values(x=0.0, y=0.0, z=0.0, q=IDENTITY, parent=1):
+    return (float(x), float(y), float(z), *q, parent)
 
 
 def _stamps(cache):
@@ -45,7 +45,7 @@ def test_repeatability_in_and_reverse_order():
     for order in (range(1, 101), range(100, 0, -1)):
         cache = TimeCache(10 * S)
         for i in order:
-            cache.insert(i, _values(i), i)
+            cache.insert(i, _values(i, parent=i))
         for i in range(1, 101):
             sample = cache.get_data(i)
             assert sample is not None
@@ -58,7 +58,7 @@ def test_time_zero_returns_newest():
     """Time 0 means the newest sample."""
     cache = TimeCache(10 * S)
     for i in (5, 9, 2):
-        cache.insert(i, _values(i), 1)
+        cache.insert(i, _values(i, parent=1))
     assert cache.get_data(0)[0] == 9
 
 
@@ -67,16 +67,16 @@ def test_get_all_items_order_and_pruning():
     cache = TimeCache(10)
     labels = {}
     for stamp, label in ((0, 0), (10, 10), (5, 5), (3, 3), (8, 81), (8, 82), (8, 83)):
-        assert cache.insert(stamp, _values(label), 1)
+        assert cache.insert(stamp, _values(label, parent=1))
         labels[label] = stamp
     order = [int(item.translation[0]) for item in cache.items()]
     assert order == [10, 83, 82, 81, 5, 3, 0]
     for stamp, label in ((0, 0), (10, 10), (5, 5), (3, 3), (8, 81), (8, 82), (8, 83)):
-        assert cache.insert(stamp, _values(label), 1)
+        assert cache.insert(stamp, _values(label, parent=1))
     assert [int(item.translation[0]) for item in cache.items()] == order
-    assert cache.insert(15, _values(15), 1)
-    assert not cache.insert(0, _values(1000), 1)
-    assert cache.insert(5, _values(55), 1)
+    assert cache.insert(15, _values(15, parent=1))
+    assert not cache.insert(0, _values(1000, parent=1))
+    assert cache.insert(5, _values(55, parent=1))
     order = [int(item.translation[0]) for item in cache.items()]
     assert order == [15, 10, 83, 82, 81, 55, 5]
 
@@ -85,7 +85,7 @@ def test_pruning_lags_one_insert():
     """Cache 2 s, stamps 0..10 inserted in order: 7, 8, 9 and 10 remain."""
     cache = TimeCache(2 * S)
     for second in range(11):
-        assert cache.insert(second * S, _values(second), 1)
+        assert cache.insert(second * S, _values(second, parent=1))
     assert _stamps(cache) == [10 * S, 9 * S, 8 * S, 7 * S]
     assert cache.oldest_stamp_ns == 7 * S
 
@@ -93,31 +93,31 @@ def test_pruning_lags_one_insert():
 def test_rejection_threshold_is_strict():
     """Exactly newest - cache_time is accepted; one nanosecond older is rejected."""
     cache = TimeCache(2 * S)
-    cache.insert(10 * S, _values(), 1)
-    assert cache.insert(8 * S, _values(1), 1)
-    assert not cache.insert(8 * S - 1, _values(2), 1)
+    cache.insert(10 * S, _values(parent=1))
+    assert cache.insert(8 * S, _values(1, parent=1))
+    assert not cache.insert(8 * S - 1, _values(2, parent=1))
 
 
 def test_exact_duplicate_dropped_same_stamp_different_data_kept():
     """Exact duplicates are dropped silently (still True); different data at a stamp is kept."""
     cache = TimeCache(10 * S)
-    assert cache.insert(S, _values(1), 1)
-    assert cache.insert(S, _values(1), 1)
+    assert cache.insert(S, _values(1, parent=1))
+    assert cache.insert(S, _values(1, parent=1))
     assert len(cache) == 1
-    assert cache.insert(S, _values(2), 1)
-    assert cache.insert(S, _values(1), 2)
+    assert cache.insert(S, _values(2, parent=1))
+    assert cache.insert(S, _values(1, parent=2))
     assert len(cache) == 3
 
 
 def test_tie_breaking_latest_oldest_interior():
     """Newest stamp -> newest-inserted, oldest -> first-inserted, interior uses newest-inserted."""
     cache = TimeCache(10 * S)
-    cache.insert(S, _values(1), 1)
-    cache.insert(S, _values(2), 1)
-    cache.insert(2 * S, _values(3), 1)
-    cache.insert(2 * S, _values(4), 1)
-    cache.insert(3 * S, _values(5), 1)
-    cache.insert(3 * S, _values(6), 1)
+    cache.insert(S, _values(1, parent=1))
+    cache.insert(S, _values(2, parent=1))
+    cache.insert(2 * S, _values(3, parent=1))
+    cache.insert(2 * S, _values(4, parent=1))
+    cache.insert(3 * S, _values(5, parent=1))
+    cache.insert(3 * S, _values(6, parent=1))
     assert cache.get_data(3 * S)[0] == 6
     assert cache.get_data(S)[0] == 1
     # Interior: older neighbour is the newest-inserted at 2 s, so ratio 0 gives 4.
@@ -133,8 +133,8 @@ def test_cartesian_interpolation():
         cache = TimeCache(10 * S)
         a = [rng.uniform(-10, 10) for _ in range(3)]
         b = [rng.uniform(-10, 10) for _ in range(3)]
-        cache.insert(S, _values(*a), 1)
-        cache.insert(2 * S, _values(*b), 1)
+        cache.insert(S, _values(*a, parent=1))
+        cache.insert(2 * S, _values(*b, parent=1))
         for step in range(11):
             t = S + step * S // 10
             sample = cache.get_data(t)
@@ -149,8 +149,8 @@ def test_angular_interpolation_is_slerp():
     cache = TimeCache(10 * S)
     q0 = math3d.quat_from_rpy(0.1, 0.2, 0.3)
     q1 = math3d.quat_from_rpy(-0.5, 0.4, 2.0)
-    cache.insert(0 + 10, _values(q=q0), 1)
-    cache.insert(10 + S, _values(q=q1), 1)
+    cache.insert(0 + 10, _values(q=q0, parent=1))
+    cache.insert(10 + S, _values(q=q1, parent=1))
     sample = cache.get_data(10 + S // 4)
     assert sample[3:7] == pytest.approx(math3d.slerp(q0, q1, 0.25), abs=1e-12)
 
@@ -158,8 +158,8 @@ def test_angular_interpolation_is_slerp():
 def test_no_interpolation_across_parent_change():
     """tf2's ReparentingInterpolationProtection: the older sample is returned unchanged."""
     cache = TimeCache(10 * S)
-    cache.insert(S, _values(1), 1)
-    cache.insert(2 * S, _values(2), 2)
+    cache.insert(S, _values(1, parent=1))
+    cache.insert(2 * S, _values(2, parent=2))
     sample = cache.get_data(S + S // 2)
     assert sample[0] == 1.0
     assert sample[7] == 1
@@ -172,14 +172,14 @@ def test_failure_messages_and_codes():
     cache = TimeCache(10 * S)
     assert cache.get_data(S) is None
     assert cache.explain_failure(S) == (ERROR_NO_DATA_FOR_EXTRAPOLATION, '')
-    cache.insert(2 * S, _values(), 1)
+    cache.insert(2 * S, _values(parent=1))
     assert cache.get_data(4 * S) is None
     assert cache.explain_failure(4 * S) == (
         ERROR_NO_DATA_FOR_EXTRAPOLATION,
         'Lookup would require extrapolation at time 4.000000, but only time 2.000000 is in the '
         'buffer',
     )
-    cache.insert(3 * S, _values(), 1)
+    cache.insert(3 * S, _values(parent=1))
     assert cache.get_data(4 * S) is None
     assert cache.explain_failure(4 * S) == (
         ERROR_FORWARD_EXTRAPOLATION,
@@ -199,8 +199,8 @@ def test_latest_time_and_parent_and_clear():
     """latest_time_and_parent gives the front entry, (0, 0) when empty; clear empties."""
     cache = TimeCache(10 * S)
     assert cache.latest_time_and_parent() == (0, 0)
-    cache.insert(S, _values(), 4)
-    cache.insert(3 * S, _values(), 5)
+    cache.insert(S, _values(parent=4))
+    cache.insert(3 * S, _values(parent=5))
     assert cache.latest_time_and_parent() == (3 * S, 5)
     assert (cache.latest_stamp_ns, cache.oldest_stamp_ns) == (3 * S, S)
     cache.clear()
@@ -212,7 +212,7 @@ def test_lazy_pruning_compacts_and_stays_correct():
     """A long stream keeps only the window and still answers every retained stamp exactly."""
     cache = TimeCache(S)
     for i in range(5000):
-        cache.insert(i * S // 100, _values(i), 1)
+        cache.insert(i * S // 100, _values(i, parent=1))
     assert len(cache) == 102
     for i in range(4900, 5000):
         assert cache.get_data(i * S // 100)[0] == i
@@ -221,8 +221,8 @@ def test_lazy_pruning_compacts_and_stays_correct():
 def test_static_cache_answers_any_time():
     """StaticCache returns its single sample at any time and survives clear()."""
     cache = StaticCache()
-    cache.insert(123, _values(1), 7)
-    cache.insert(5, _values(2), 8)
+    cache.insert(123, _values(1, parent=7))
+    cache.insert(5, _values(2, parent=8))
     assert cache.get_data(999 * S)[0] == 2
     assert cache.get_parent(1) == 8
     assert cache.latest_time_and_parent() == (0, 8)

@@ -60,16 +60,15 @@ def sample_batch(
         sample = cache.get_data(0)
         values = np.broadcast_to(np.asarray(sample[:7], dtype=np.float64), (count, 7)).copy()
         return values, np.full(count, sample[7], dtype=np.int64), np.ones(count, dtype=bool)
-    stamps_a, data_a, parents_a = cache.arrays()
-    stamps = np.frombuffer(stamps_a, dtype=np.int64) if len(stamps_a) else np.empty(0, np.int64)
+    stamps, table = cache.arrays()
     size = stamps.shape[0]
     values = np.zeros((count, 7))
     parents = np.zeros(count, dtype=np.int64)
     ok = np.zeros(count, dtype=bool)
     if size == 0:
         return values, parents, ok
-    data = np.frombuffer(data_a, dtype=np.float64).reshape(size, 7)
-    parent_ids = np.frombuffer(parents_a, dtype=np.int32).astype(np.int64)
+    data = table[:, :7]
+    parent_ids = table[:, 7].astype(np.int64)
 
     single = np.full(count, -1, dtype=np.int64)
     zero = times == 0

@@ -75,6 +75,7 @@ QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
 NO_PARENT = 'NO_PARENT'
 
 _LOGGER = logging.getLogger('tf_demo.core')
+_canonical_quat = math3d.canonical_quat
 _IDENTITY_T: Vec3 = (0.0, 0.0, 0.0)
 _IDENTITY_Q: Quat = (0.0, 0.0, 0.0, 1.0)
 
@@ -236,84 +237,48 @@ class BufferCore:
                 f'{type(child).__name__}'
             )
         try:
-            tx, ty, tz = (float(v) for v in translation)
-            qx, qy, qz, qw = (float(v) for v in rotation)
+            tx, ty, tz = translation
+            qx, qy, qz, qw = rotation
+            tx = float(tx)
+            ty = float(ty)
+            tz = float(tz)
+            rx, ry, rz, rw = _canonical_quat((float(qx), float(qy), float(qz), float(qw)))
             stamp_ns = int(stamp_ns)
         except (TypeError, ValueError) as error:
             raise TypeError(
                 'set_transform needs translation (x, y, z), rotation (x, y, z, w) as numbers '
                 f'and an integer stamp_ns: {error}'
             ) from error
-        rx, ry, rz, rw = math3d.quat_from_matrix(math3d.matrix_from_quat((qx, qy, qz, qw)))
         if parent[:1] == '/':
             parent = parent[1:]
         if child[:1] == '/':
             child = child[1:]
 
-        log = self._log
-        ok = True
-        if child == parent:
-            log(
-                logging.ERROR,
-                f'TF_SELF_TRANSFORM: Ignoring transform from authority "{authority}" with '
-                f'frame_id and  child_frame_id "{child}" because they are the same',
-            )
-            ok = False
-        if not child:
-            log(
-                logging.ERROR,
-                f'TF_NO_CHILD_FRAME_ID: Ignoring transform from authority "{authority}" '
-                'because child_frame_id not set ',
-            )
-            ok = False
-        if not parent:
-            log(
-                logging.ERROR,
-                f'TF_NO_FRAME_ID: Ignoring transform with child_frame_id "{child}"  from '
-                f'authority "{authority}" because frame_id not set',
-            )
-            ok = False
-        values = (tx, ty, tz, rx, ry, rz, rw)
-        isnan = math.isnan
-        if isnan(tx) or isnan(ty) or isnan(tz) or isnan(rx) or isnan(ry) or isnan(rz) or isnan(rw):
-            numbers = ' '.join(_c_float(v) for v in values[:3])
-            quat = ' '.join(_c_float(v) for v in values[3:])
-            log(
-                logging.ERROR,
-                f'TF_NAN_INPUT: Ignoring transform for child_frame_id "{child}" from authority '
-                f'"{authority}" because of a nan value in the transform ({numbers}) ({quat})',
-            )
-            ok = False
+        total = tx + ty + tz + rx + ry + rz + rw  # NaN if any value is NaN (or inf - inf)
         if (
-            not abs((rw * rw + rx * rx + ry * ry + rz * rz) - 1.0)
-            < QUATERNION_NORMALIZATION_TOLERANCE
-        ):
-            quat = ' '.join(_c_float(v) for v in values[3:])
-            log(
-                logging.ERROR,
-                f'TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id "{child}" '
-                f'from authority "{authority}" because of an invalid quaternion in the '
-                f'transform ({quat})',
-            )
-            ok = False
-        if not ok:
+            child == parent or not child or not parent or total != total  # noqa: PLR0124
+        ) and self._log_invalid(parent, child, authority, (tx, ty, tz), (rx, ry, rz, rw)):
             return False
 
         with self._lock:
-            child_id = self._intern(child)
+            child_id = self._ids.get(child)
+            if child_id is None:
+                child_id = self._intern(child)
             cache = self._caches[child_id]
             if cache is None or cache.is_static != is_static:
                 cache = (
                     StaticCache(child_id) if is_static else TimeCache(self.cache_time_ns, child_id)
                 )
                 self._caches[child_id] = cache
-            parent_id = self._intern(parent)
-            stored = cache.insert(stamp_ns, values, parent_id)
+            parent_id = self._ids.get(parent)
+            if parent_id is None:
+                parent_id = self._intern(parent)
+            stored = cache.insert(stamp_ns, (tx, ty, tz, rx, ry, rz, rw, parent_id))
             if stored:
                 self._authority[child_id] = authority
             callbacks = self._callbacks_snapshot
         if not stored:
-            log(
+            self._log(
                 logging.WARNING,
                 f'TF_OLD_DATA ignoring data from the past for frame {child} at time '
                 f'{display_time_point(stamp_ns)} according to authority {authority}\n'
@@ -323,6 +288,59 @@ class BufferCore:
         for callback in callbacks:
             callback()
         return True
+
+    def _log_invalid(
+        self, parent: str, child: str, authority: str, translation: Vec3, rotation: Quat
+    ) -> bool:
+        """Log tf2's error line for every failed insert check; return whether any failed."""
+        tx, ty, tz = translation
+        rx, ry, rz, rw = rotation
+        log = self._log
+        failed = False
+        if child == parent:
+            log(
+                logging.ERROR,
+                f'TF_SELF_TRANSFORM: Ignoring transform from authority "{authority}" with '
+                f'frame_id and  child_frame_id "{child}" because they are the same',
+            )
+            failed = True
+        if not child:
+            log(
+                logging.ERROR,
+                f'TF_NO_CHILD_FRAME_ID: Ignoring transform from authority "{authority}" '
+                'because child_frame_id not set ',
+            )
+            failed = True
+        if not parent:
+            log(
+                logging.ERROR,
+                f'TF_NO_FRAME_ID: Ignoring transform with child_frame_id "{child}"  from '
+                f'authority "{authority}" because frame_id not set',
+            )
+            failed = True
+        isnan = math.isnan
+        if isnan(tx) or isnan(ty) or isnan(tz) or isnan(rx) or isnan(ry) or isnan(rz) or isnan(rw):
+            numbers = ' '.join(_c_float(v) for v in (tx, ty, tz))
+            quat = ' '.join(_c_float(v) for v in (rx, ry, rz, rw))
+            log(
+                logging.ERROR,
+                f'TF_NAN_INPUT: Ignoring transform for child_frame_id "{child}" from authority '
+                f'"{authority}" because of a nan value in the transform ({numbers}) ({quat})',
+            )
+            failed = True
+        if (
+            not abs((rw * rw + rx * rx + ry * ry + rz * rz) - 1.0)
+            < QUATERNION_NORMALIZATION_TOLERANCE
+        ):
+            quat = ' '.join(_c_float(v) for v in (rx, ry, rz, rw))
+            log(
+                logging.ERROR,
+                f'TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id "{child}" '
+                f'from authority "{authority}" because of an invalid quaternion in the '
+                f'transform ({quat})',
+            )
+            failed = True
+        return failed
 
     def add_insert_callback(self, callback: Callable[[], None]) -> int:
         """Call ``callback()`` after each successful insert (outside the lock); return a handle."""

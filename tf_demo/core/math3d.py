@@ -325,9 +325,40 @@ def canonical_quat(q: Quat) -> Quat:
     """
     Return ``q`` as tf2 stores it on insert: normalised and sign-canonicalised.
 
-    tf2 converts the message quaternion to a matrix (dividing by ``|q|^2``) and back.  Zero,
-    infinite or NaN input yields NaN components.
+    tf2 converts the message quaternion to a matrix (dividing by ``|q|^2``) and back; this is
+    :func:`quat_from_matrix` of :func:`matrix_from_quat` with the same arithmetic, inlined.
+    Zero, infinite or NaN input yields NaN components.
     """
+    x, y, z, w = q
+    d = x * x + y * y + z * z + w * w
+    if not d:
+        return (math.nan, math.nan, math.nan, math.nan)
+    s = 2.0 / d
+    xs = x * s
+    ys = y * s
+    zs = z * s
+    xx = x * xs
+    yy = y * ys
+    zz = z * zs
+    m00 = 1.0 - (yy + zz)
+    m11 = 1.0 - (xx + zz)
+    m22 = 1.0 - (xx + yy)
+    trace = m00 + m11 + m22
+    if trace > 0.0:
+        wx = w * xs
+        wy = w * ys
+        wz = w * zs
+        xy = x * ys
+        xz = x * zs
+        yz = y * zs
+        r = math.sqrt(trace + 1.0)
+        half = 0.5 / r
+        return (
+            (yz + wx - (yz - wx)) * half,
+            (xz + wy - (xz - wy)) * half,
+            (xy + wz - (xy - wz)) * half,
+            r * 0.5,
+        )
     return quat_from_matrix(matrix_from_quat(q))
 
 

@@ -18,7 +18,7 @@ Per-frame transform history: tf2's ``TimeCache`` and ``StaticCache``.
 A cache belongs to the *child* frame of a link and stores, per sample, the stamp, the
 translation, the rotation and the parent frame id (the parent may change over time).
 
-Storage is compact (``array`` of int64 stamps, float64 values and int32 parent ids) and kept in
+Storage is an ``array`` of int64 stamps plus a parallel list of sample tuples, kept in
 ascending stamp order; among equal stamps the most recently inserted sample comes last.  This is
 tf2's newest-first ``std::list`` read backwards, so every tie-breaking rule of tf2 carries over:
 
@@ -41,6 +41,12 @@ from bisect import bisect_left
 from bisect import bisect_right
 import math
 from typing import NamedTuple
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:
+    import numpy.typing as npt
 
 __all__ = [
     'DEFAULT_CACHE_TIME_NS',
@@ -71,7 +77,8 @@ ERROR_NO_DATA_FOR_EXTRAPOLATION = 9
 Sample = tuple[float, float, float, float, float, float, float, int]
 
 _NS_PER_S = 1_000_000_000
-_NOT_FOUND = -(1 << 62)  # _bracket's failure value (single matches are encoded as ~index)
+_acos = math.acos
+_sin = math.sin
 
 
 class TransformStorage(NamedTuple):
@@ -103,177 +110,140 @@ class TimeCache:
 
     is_static = False
 
-    __slots__ = ('_data', '_max_storage_ns', '_parents', '_stamps', '_start', 'child_id')
+    __slots__ = (
+        '_arrays',
+        '_max_storage_ns',
+        '_samples',
+        '_stamps',
+        '_start',
+        '_version',
+        'child_id',
+    )
 
     def __init__(self, max_storage_ns: int = DEFAULT_CACHE_TIME_NS, child_id: int = 0) -> None:
         self._max_storage_ns = max_storage_ns
         self.child_id = child_id
         self._stamps: array[int] = array('q')
-        self._data: array[float] = array('d')
-        self._parents: array[int] = array('i')
+        self._samples: list[Sample] = []
         self._start = 0
+        self._version = 0
+        self._arrays: tuple[int, npt.NDArray[np.int64], npt.NDArray[np.float64]] | None = None
 
     # --- insertion -----------------------------------------------------------------------
 
-    def insert(self, stamp_ns: int, values: tuple[float, ...], parent_id: int) -> bool:
+    def insert(self, stamp_ns: int, sample: Sample) -> bool:
         """
-        Insert ``values`` = ``(tx, ty, tz, qx, qy, qz, qw)`` at ``stamp_ns`` (tf2 insertData).
+        Insert ``sample`` = ``(tx, ty, tz, qx, qy, qz, qw, parent_id)`` at ``stamp_ns``.
 
-        :returns: False when the stamp is older than ``newest - max_storage`` (tf2's TF_OLD_DATA
-            case); True otherwise, including for a silently dropped exact duplicate.
+        This is tf2's ``insertData``: prune first (relative to the newest stamp before the
+        insert), reject data older than ``newest - max_storage``, drop exact duplicates.
+
+        :returns: False when the stamp is too old (tf2's TF_OLD_DATA case); True otherwise,
+            including for a silently dropped exact duplicate.
         """
         stamps = self._stamps
         start = self._start
         end = len(stamps)
+        position = end
         if start < end:
             latest = stamps[end - 1]
             oldest_kept = latest - self._max_storage_ns
             if stamps[start] < oldest_kept:
                 start = self._start = bisect_left(stamps, oldest_kept, start, end)
+                self._version += 1
+                if start > 32 and 2 * start > end:
+                    del stamps[:start]
+                    del self._samples[:start]
+                    end -= start
+                    start = self._start = 0
             if stamp_ns < oldest_kept:
-                self._compact_if_sparse()
                 return False
-            if stamp_ns >= latest:
-                position = end
-                if stamp_ns == latest and self._has_duplicate(
-                    bisect_left(stamps, stamp_ns, start, end), end, values, parent_id
-                ):
-                    return True
-            else:
+            if stamp_ns < latest:
                 position = bisect_right(stamps, stamp_ns, start, end)
-                first_same = bisect_left(stamps, stamp_ns, start, position)
-                if first_same < position and self._has_duplicate(
-                    first_same, position, values, parent_id
-                ):
-                    return True
-        else:
-            position = end
+            if stamp_ns <= latest:
+                samples = self._samples
+                index = position - 1
+                while index >= start and stamps[index] == stamp_ns:
+                    if samples[index] == sample:
+                        return True
+                    index -= 1
+        self._version += 1
         if position == end:
             stamps.append(stamp_ns)
-            self._data.extend(values)
-            self._parents.append(parent_id)
+            self._samples.append(sample)
         else:
             stamps.insert(position, stamp_ns)
-            self._data[7 * position : 7 * position] = array('d', values)
-            self._parents.insert(position, parent_id)
-        self._compact_if_sparse()
+            self._samples.insert(position, sample)
         return True
-
-    def _has_duplicate(
-        self, first: int, end: int, values: tuple[float, ...], parent_id: int
-    ) -> bool:
-        data = self._data
-        parents = self._parents
-        for index in range(first, end):
-            base = 7 * index
-            if parents[index] == parent_id and tuple(data[base : base + 7]) == tuple(values):
-                return True
-        return False
-
-    def _compact_if_sparse(self) -> None:
-        start = self._start
-        if start > 32 and 2 * start > len(self._stamps):
-            del self._stamps[:start]
-            del self._data[: 7 * start]
-            del self._parents[:start]
-            self._start = 0
 
     def clear(self) -> None:
         """Drop every sample (tf2 clearList)."""
         self._stamps = array('q')
-        self._data = array('d')
-        self._parents = array('i')
+        self._samples = []
         self._start = 0
+        self._version += 1
 
     # --- queries -------------------------------------------------------------------------
-
-    def _sample(self, index: int) -> Sample:
-        data = self._data
-        base = 7 * index
-        return (
-            data[base],
-            data[base + 1],
-            data[base + 2],
-            data[base + 3],
-            data[base + 4],
-            data[base + 5],
-            data[base + 6],
-            self._parents[index],
-        )
-
-    def _bracket(self, time_ns: int) -> int:
-        """
-        Locate ``time_ns`` as tf2's ``findClosest`` does.
-
-        :returns: ``_NOT_FOUND`` on failure, ``~i`` for a single matching sample ``i``, or
-            ``i`` for the older neighbour of an interior time (the newer one is ``i + 1``).
-        """
-        stamps = self._stamps
-        start = self._start
-        end = len(stamps)
-        if start == end:
-            return _NOT_FOUND
-        if time_ns == 0:
-            return ~(end - 1)
-        if end - start == 1:
-            return ~start if stamps[start] == time_ns else _NOT_FOUND
-        latest = stamps[end - 1]
-        if time_ns == latest:
-            return ~(end - 1)
-        earliest = stamps[start]
-        if time_ns == earliest:
-            return ~start
-        if time_ns > latest or time_ns < earliest:
-            return _NOT_FOUND
-        return bisect_right(stamps, time_ns, start, end) - 1
 
     def get_data(self, time_ns: int) -> Sample | None:
         """
         Return the (possibly interpolated) sample at ``time_ns`` (0 = newest), or None.
 
-        Interpolation is linear in translation and tf2's slerp in rotation; it never crosses a
-        parent change (the older sample is returned instead).  Use :meth:`explain_failure` for
-        tf2's error text when None is returned.
+        This is tf2's ``findClosest`` plus ``interpolate``: linear in translation, tf2's slerp in
+        rotation, never across a parent change (the older sample is returned instead).  The
+        stored rotations are unit quaternions, so slerp skips tf2's division by their norms
+        (a difference of the order of 1e-16).  Use :meth:`explain_failure` for tf2's error text
+        when None is returned.
         """
-        found = self._bracket(time_ns)
-        if found < 0:
-            if found == _NOT_FOUND:
-                return None
-            return self._sample(~found)
-        parents = self._parents
-        parent = parents[found]
-        if parents[found + 1] != parent:
-            return self._sample(found)
         stamps = self._stamps
-        one_stamp = stamps[found]
-        two_stamp = stamps[found + 1]
-        data = self._data
-        base = 7 * found
-        if two_stamp == one_stamp:
-            return self._sample(found + 1)
-        ratio = float(time_ns - one_stamp) / float(two_stamp - one_stamp)
+        end = len(stamps)
+        start = self._start
+        if start == end:
+            return None
+        if time_ns == 0:
+            return self._samples[end - 1]
+        latest = stamps[end - 1]
+        if time_ns >= latest:
+            return self._samples[end - 1] if time_ns == latest else None
+        earliest = stamps[start]
+        if time_ns <= earliest:
+            return self._samples[start] if time_ns == earliest else None
+        index = bisect_right(stamps, time_ns, start, end) - 1
+        samples = self._samples
+        one = samples[index]
+        two = samples[index + 1]
+        tx0, ty0, tz0, x0, y0, z0, w0, parent = one
+        tx1, ty1, tz1, x1, y1, z1, w1, parent1 = two
+        if parent1 != parent:
+            return one
+        one_stamp = stamps[index]
+        ratio = float(time_ns - one_stamp) / float(stamps[index + 1] - one_stamp)
         keep = 1.0 - ratio
-        x0, y0, z0, w0 = data[base + 3], data[base + 4], data[base + 5], data[base + 6]
-        x1, y1, z1, w1 = data[base + 10], data[base + 11], data[base + 12], data[base + 13]
         dot = x0 * x1 + y0 * y1 + z0 * z1 + w0 * w1
-        cosine = (-dot if dot < 0 else dot) / math.sqrt(
-            (x0 * x0 + y0 * y0 + z0 * z0 + w0 * w0) * (x1 * x1 + y1 * y1 + z1 * z1 + w1 * w1)
-        )
-        theta = math.acos(1.0 if cosine > 1.0 else cosine) * 2.0 / 2.0
-        if theta != 0.0:
-            d = 1.0 / math.sin(theta)
-            s0 = math.sin(keep * theta)
-            s1 = math.sin(ratio * theta)
-            if dot < 0:
-                s1 = -s1
-            x0 = (x0 * s0 + x1 * s1) * d
-            y0 = (y0 * s0 + y1 * s1) * d
-            z0 = (z0 * s0 + z1 * s1) * d
-            w0 = (w0 * s0 + w1 * s1) * d
+        if dot < 0:
+            theta = _acos(-dot if -dot < 1.0 else 1.0)
+            if theta != 0.0:
+                d = 1.0 / _sin(theta)
+                s0 = _sin(keep * theta) * d
+                s1 = -_sin(ratio * theta) * d
+                x0 = x0 * s0 + x1 * s1
+                y0 = y0 * s0 + y1 * s1
+                z0 = z0 * s0 + z1 * s1
+                w0 = w0 * s0 + w1 * s1
+        else:
+            theta = _acos(dot if dot < 1.0 else 1.0)
+            if theta != 0.0:
+                d = 1.0 / _sin(theta)
+                s0 = _sin(keep * theta) * d
+                s1 = _sin(ratio * theta) * d
+                x0 = x0 * s0 + x1 * s1
+                y0 = y0 * s0 + y1 * s1
+                z0 = z0 * s0 + z1 * s1
+                w0 = w0 * s0 + w1 * s1
         return (
-            keep * data[base] + ratio * data[base + 7],
-            keep * data[base + 1] + ratio * data[base + 8],
-            keep * data[base + 2] + ratio * data[base + 9],
+            keep * tx0 + ratio * tx1,
+            keep * ty0 + ratio * ty1,
+            keep * tz0 + ratio * tz1,
             x0,
             y0,
             z0,
@@ -283,10 +253,20 @@ class TimeCache:
 
     def get_parent(self, time_ns: int) -> int:
         """Return the parent id at ``time_ns`` (older neighbour's parent), or 0 on failure."""
-        found = self._bracket(time_ns)
-        if found == _NOT_FOUND:
+        stamps = self._stamps
+        end = len(stamps)
+        start = self._start
+        if start == end:
             return 0
-        return self._parents[~found if found < 0 else found]
+        if time_ns == 0:
+            return self._samples[end - 1][7]
+        latest = stamps[end - 1]
+        if time_ns >= latest:
+            return self._samples[end - 1][7] if time_ns == latest else 0
+        earliest = stamps[start]
+        if time_ns <= earliest:
+            return self._samples[start][7] if time_ns == earliest else 0
+        return self._samples[bisect_right(stamps, time_ns, start, end) - 1][7]
 
     def explain_failure(self, time_ns: int) -> tuple[int, str]:
         """
@@ -325,7 +305,7 @@ class TimeCache:
         end = len(self._stamps)
         if self._start == end:
             return 0, 0
-        return self._stamps[end - 1], self._parents[end - 1]
+        return self._stamps[end - 1], self._samples[end - 1][7]
 
     @property
     def latest_stamp_ns(self) -> int:
@@ -342,24 +322,33 @@ class TimeCache:
 
     def items(self) -> list[TransformStorage]:
         """Return every held sample, newest first (tf2's list order)."""
-        out = []
-        for index in range(len(self._stamps) - 1, self._start - 1, -1):
-            sample = self._sample(index)
-            out.append(
-                TransformStorage(
-                    self._stamps[index],
-                    (sample[0], sample[1], sample[2]),
-                    (sample[3], sample[4], sample[5], sample[6]),
-                    sample[7],
-                    self.child_id,
-                )
+        return [
+            TransformStorage(
+                self._stamps[index],
+                (s[0], s[1], s[2]),
+                (s[3], s[4], s[5], s[6]),
+                s[7],
+                self.child_id,
             )
-        return out
+            for index in range(len(self._stamps) - 1, self._start - 1, -1)
+            for s in (self._samples[index],)
+        ]
 
-    def arrays(self) -> tuple[array[int], array[float], array[int]]:
-        """Return copies of the live ``(stamps, values, parents)`` arrays (ascending order)."""
+    def arrays(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64]]:
+        """
+        Return the live samples as numpy arrays, ascending: stamps ``(K,)``, samples ``(K, 8)``.
+
+        Column 7 holds the parent id.  The arrays are cached until the next change; treat them
+        as read-only.
+        """
+        cached = self._arrays
+        if cached is not None and cached[0] == self._version:
+            return cached[1], cached[2]
         start = self._start
-        return (self._stamps[start:], self._data[7 * start :], self._parents[start:])
+        stamps = np.array(self._stamps[start:], dtype=np.int64)
+        samples = np.array(self._samples[start:], dtype=np.float64).reshape(-1, 8)
+        self._arrays = (self._version, stamps, samples)
+        return stamps, samples
 
 
 class StaticCache:
@@ -373,19 +362,10 @@ class StaticCache:
         self.child_id = child_id
         self._sample: Sample = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0)
 
-    def insert(self, stamp_ns: int, values: tuple[float, ...], parent_id: int) -> bool:
+    def insert(self, stamp_ns: int, sample: Sample) -> bool:
         """Overwrite the stored sample (the stamp is ignored); always succeeds."""
         del stamp_ns
-        self._sample = (
-            values[0],
-            values[1],
-            values[2],
-            values[3],
-            values[4],
-            values[5],
-            values[6],
-            parent_id,
-        )
+        self._sample = sample
         return True
 
     def clear(self) -> None:
