@@ -17,6 +17,8 @@
 from pathlib import Path
 
 import pytest
+from tf_demo.transport.parameters import FloatingPointRange
+from tf_demo.transport.parameters import IntegerRange
 from tf_demo.transport.parameters import InvalidParameterTypeException
 from tf_demo.transport.parameters import InvalidParameterValueException
 from tf_demo.transport.parameters import Parameter
@@ -222,3 +224,80 @@ def test_standalone_node_takes_overrides_from_init_and_its_own_arguments(
         assert node.get_parameter('rate').value == 2.0
     finally:
         transport.shutdown()
+
+
+def test_declaring_only_a_name_is_dynamic_and_deprecated() -> None:
+    """A bare name declares a dynamically typed parameter, with rclpy's deprecation warning."""
+    store = ParameterStore()
+    with pytest.warns(UserWarning, match='only providing its name is deprecated'):
+        parameter = store.declare_parameter('loose')
+    assert parameter.type_ is Type.NOT_SET
+    assert store.describe_parameter('loose').dynamic_typing
+    assert store.set_parameters([Parameter('loose', value=1)])[0].successful
+    assert store.set_parameters([Parameter('loose', value='one')])[0].successful
+
+
+def test_static_parameter_needs_a_type() -> None:
+    """None with a static descriptor, or Type.NOT_SET, cannot declare a static parameter."""
+    store = ParameterStore()
+    with pytest.raises(ValueError, match='default value of type PARAMETER_NOT_SET'):
+        store.declare_parameter('x', None, ParameterDescriptor())
+    with pytest.raises(ValueError, match='as statically typed of type NOT_SET'):
+        store.declare_parameter('x', Type.NOT_SET)
+    with pytest.raises(ValueError, match='`dynamic_typing=True` is not allowed'):
+        store.declare_parameter('x', Type.INTEGER, ParameterDescriptor(dynamic_typing=True))
+    with pytest.raises(TypeError, match='is not a ParameterDescriptor'):
+        store.declare_parameters('', [('x', 1, 'descriptor')])
+
+
+def test_not_set_value_undeclares_dynamic_but_not_static_parameters() -> None:
+    """Setting NOT_SET removes a dynamic parameter; a static one refuses with rclpy's reason."""
+    store = ParameterStore()
+    store.declare_parameter('dynamic', 1, ParameterDescriptor(dynamic_typing=True))
+    store.declare_parameter('static', 1)
+    assert store.set_parameters([Parameter('dynamic')])[0].successful
+    assert not store.has_parameter('dynamic')
+    [result] = store.set_parameters([Parameter('static')])
+    assert (result.successful, result.reason) == (False, 'Static parameter cannot be undeclared')
+
+
+def test_descriptor_ranges_are_enforced_with_rclpys_reasons() -> None:
+    """Integer and floating point ranges accept edges and steps and reject the rest."""
+    store = ParameterStore()
+    store.declare_parameter(
+        'count',
+        4,
+        ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=10, step=2)]),
+    )
+    store.declare_parameter(
+        'ratio', 0.5, ParameterDescriptor(floating_point_range=[FloatingPointRange(0.0, 1.0, 0.0)])
+    )
+    assert store.set_parameters([Parameter('count', value=10)])[0].successful
+    [odd] = store.set_parameters([Parameter('count', value=3)])
+    assert odd.reason == (
+        'The parameter value for count is not a valid step. Min: 0, max: 10, value: 3, step: 2'
+    )
+    [high] = store.set_parameters([Parameter('ratio', value=1.5)])
+    assert high.reason == 'Parameter ratio out of range Min: 0.0, Max: 1.0, value: 1.5'
+    assert store.set_parameters([Parameter('ratio', value=1.0 + 1e-9)])[0].successful
+    with pytest.raises(InvalidParameterValueException, match='out of range'):
+        ParameterStore({'count': Parameter('count', value=11)}).declare_parameter(
+            'count', 1, ParameterDescriptor(integer_range=[IntegerRange(0, 10, 0)])
+        )
+
+
+def test_pre_and_post_set_callbacks() -> None:
+    """Pre-set callbacks rewrite the list before validation; post-set ones see what was set."""
+    store = ParameterStore()
+    store.declare_parameter('width', 1)
+    store.declare_parameter('area', 1)
+    seen: list[list[str]] = []
+    store.add_pre_set_parameters_callback(
+        lambda params: [*params, Parameter('area', value=params[0].value ** 2)]
+    )
+    store.add_post_set_parameters_callback(lambda params: seen.append([p.name for p in params]))
+    assert store.set_parameters([Parameter('width', value=3)])[0].successful
+    assert store.get_parameter('area').value == 9
+    assert seen == [['width', 'area']]
+    store.declare_parameter('depth', 2)
+    assert seen[-1] == ['depth']  # declaring runs post-set callbacks too

@@ -32,13 +32,18 @@ from collections.abc import Iterable
 from collections.abc import Mapping
 from collections.abc import Sequence
 from dataclasses import dataclass
+from dataclasses import field
 from enum import Enum
+import math
 import threading
 from typing import Any
+import warnings
 
 from tf_demo.transport.backend import rclpy_world
 
 __all__ = [
+    'FloatingPointRange',
+    'IntegerRange',
     'InvalidParameterException',
     'InvalidParameterTypeException',
     'InvalidParameterValueException',
@@ -188,6 +193,24 @@ class SetParametersResult:
 
 
 @dataclass
+class FloatingPointRange:
+    """Allowed range of a DOUBLE parameter (``rcl_interfaces/msg/FloatingPointRange``)."""
+
+    from_value: float = 0.0
+    to_value: float = 0.0
+    step: float = 0.0
+
+
+@dataclass
+class IntegerRange:
+    """Allowed range of an INTEGER parameter (``rcl_interfaces/msg/IntegerRange``)."""
+
+    from_value: int = 0
+    to_value: int = 0
+    step: int = 0
+
+
+@dataclass
 class ParameterDescriptor:
     """Description and constraints of a parameter (``rcl_interfaces/msg/ParameterDescriptor``)."""
 
@@ -197,6 +220,8 @@ class ParameterDescriptor:
     additional_constraints: str = ''
     read_only: bool = False
     dynamic_typing: bool = False
+    floating_point_range: list[FloatingPointRange] = field(default_factory=list)
+    integer_range: list[IntegerRange] = field(default_factory=list)
 
 
 class ParameterException(Exception):  # noqa: N818 - rclpy's name
@@ -266,16 +291,25 @@ class ParameterUninitializedException(ParameterException):
 
 
 OnSetCallback = Callable[[list[Parameter]], SetParametersResult]
+PreSetCallback = Callable[[list[Parameter]], list[Parameter]]
+PostSetCallback = Callable[[list[Parameter]], None]
 _WRONG_TYPE_PREFIX = 'Wrong parameter type'
+# Relative tolerance of floating point range checks (rclpy's Node.PARAM_REL_TOL).
+PARAM_REL_TOL = 1e-6
 
 
 class ParameterStore:
     """
-    The declared parameters of one node, with rclpy's declare/get/set semantics.
+    The declared parameters of one node, with the semantics of ``rclpy.node.Node`` (Jazzy).
+
+    Declaring takes the override when there is one, infers a static type from the default
+    (``dynamic_typing`` lifts it), and runs the on-set callbacks, which may reject. Setting runs
+    pre-set, on-set and post-set callbacks; a value of type NOT_SET undeclares a dynamically
+    typed parameter. Not thread-unsafe: one lock guards every change.
 
     :param overrides: values that replace declared defaults, in precedence order already
         resolved (``--params-file`` and ``-p`` for this node, then the constructor's
-        ``parameter_overrides``); see :func:`tf_demo.transport.ros_args.parameter_overrides`.
+        ``parameter_overrides``); see :func:`tf_demo.transport.ros_args.resolve_node_arguments`.
     :param allow_undeclared_parameters: as the rclpy Node argument of that name.
     :param automatically_declare_parameters_from_overrides: as the rclpy Node argument.
     """
@@ -291,16 +325,26 @@ class ParameterStore:
         self._overrides: dict[str, Parameter] = dict(overrides or {})
         self._parameters: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
+        self._pre_set_callbacks: list[PreSetCallback] = []
         self._on_set_callbacks: list[OnSetCallback] = []
+        self._post_set_callbacks: list[PostSetCallback] = []
         self._allow_undeclared = allow_undeclared_parameters
         if automatically_declare_parameters_from_overrides:
-            for name, parameter in self._overrides.items():
-                self.declare_parameter(name, parameter.value)
+            self._declare_common(
+                list(self._overrides.values()),
+                {
+                    name: ParameterDescriptor(dynamic_typing=True)
+                    for name in self._overrides
+                    if name not in self._parameters
+                },
+            )
 
     @property
     def overrides(self) -> dict[str, Parameter]:
         """A copy of the overrides this store was built with."""
         return dict(self._overrides)
+
+    # -- declaring -----------------------------------------------------------------------------
 
     def declare_parameter(
         self,
@@ -312,14 +356,21 @@ class ParameterStore:
         """
         Declare one parameter and return it, with the override applied unless ignored.
 
-        ``value`` may be a :class:`Parameter.Type` to declare a typed parameter without a
-        default (reading it before it is set raises ParameterUninitializedException).
+        Only a name (no value, no descriptor) declares a dynamically typed parameter (rclpy
+        warns that this is deprecated). ``value`` may be a :class:`Parameter.Type` to declare a
+        statically typed parameter without a default (reading it before it is set raises
+        ParameterUninitializedException).
 
         :raises ParameterAlreadyDeclaredException: when ``name`` is already declared.
         :raises InvalidParameterTypeException: when the override has another type.
-        :raises InvalidParameterValueException: when an on-set callback rejects the value.
+        :raises InvalidParameterValueException: when an on-set callback or a range rejects it.
+        :raises ValueError: for a static parameter with no type (rclpy's texts).
         """
-        return self.declare_parameters('', [(name, value, descriptor)], ignore_override)[0]
+        if value is None and descriptor is None:
+            entry: tuple[Any, ...] = (name,)
+        else:
+            entry = (name, value, descriptor if descriptor is not None else ParameterDescriptor())
+        return self.declare_parameters('', [entry], ignore_override)[0]
 
     def declare_parameters(
         self,
@@ -327,46 +378,87 @@ class ParameterStore:
         parameters: Sequence[tuple[Any, ...]],
         ignore_override: bool = False,
     ) -> list[Parameter]:
-        """Declare several parameters: tuples of ``(name[, value[, descriptor]])``."""
-        declared: list[tuple[Parameter, ParameterDescriptor]] = []
-        for entry in parameters:
+        """Declare several parameters: tuples of ``(name[, value or type[, descriptor]])``."""
+        parameter_list: list[Parameter] = []
+        descriptors: dict[str, ParameterDescriptor] = {}
+        for index, entry in enumerate(parameters):
             if not isinstance(entry, tuple) or not 1 <= len(entry) <= 3:
-                msg = 'Invalid parameter tuple: expected (name[, value[, descriptor]])'
+                msg = (
+                    f'Invalid parameter tuple length at index {index} in parameters list: '
+                    f'{entry}; expecting length between 1 and 3'
+                )
                 raise TypeError(msg)
             name = entry[0]
-            value = entry[1] if len(entry) > 1 else None
-            descriptor = entry[2] if len(entry) > 2 and entry[2] is not None else None
             if not isinstance(name, str):
-                msg = 'First element {name} at index {index} in parameters list is not a str.'
-                raise TypeError(msg.format(name=name, index=len(declared)))
-            full_name = f'{namespace}.{name}' if namespace else name
-            if not full_name:
-                raise InvalidParameterException(full_name)
-            descriptor = ParameterDescriptor(**vars(descriptor)) if descriptor else None
-            descriptor = descriptor or ParameterDescriptor()
-            descriptor.name = full_name
-            if isinstance(value, ParameterType):
-                descriptor.type = value.value
-                value = None
-            elif descriptor.type == ParameterType.NOT_SET.value:
-                descriptor.type = ParameterType.from_parameter_value(value).value
-            if not ignore_override and full_name in self._overrides:
-                value = self._overrides[full_name].value
-            declared.append((Parameter(full_name, value=value), descriptor))
+                msg = f'First element {name} at index {index} in parameters list is not a str.'
+                raise TypeError(msg)
+            if namespace:
+                name = f'{namespace}.{name}'
+            if not name:
+                raise InvalidParameterException(name)
+            second = entry[1] if len(entry) > 1 else None
+            given = entry[2] if len(entry) > 2 else ParameterDescriptor()
+            if not isinstance(given, ParameterDescriptor):
+                msg = (
+                    f'Third element {given} at index {index} in parameters list '
+                    'is not a ParameterDescriptor.'
+                )
+                raise TypeError(msg)
+            descriptor = ParameterDescriptor(**vars(given))
+            value: Any = None
+            if len(entry) == 1:
+                warnings.warn(
+                    f"when declaring parameter named '{name}', declaring a parameter only "
+                    'providing its name is deprecated.',
+                    stacklevel=3,
+                )
+                descriptor.dynamic_typing = True
+            if isinstance(second, ParameterType):
+                if second is ParameterType.NOT_SET:
+                    msg = (
+                        f'Cannot declare parameter {{{name}}} as statically typed of type NOT_SET'
+                    )
+                    raise ValueError(msg)
+                if descriptor.dynamic_typing:
+                    msg = (
+                        f'When declaring parameter {{{name}}} passing a descriptor with'
+                        '`dynamic_typing=True` is not allowed when the parameter type is provided'
+                    )
+                    raise ValueError(msg)
+                descriptor.type = second.value
+            else:
+                value = second
+                if not descriptor.dynamic_typing:
+                    descriptor.type = ParameterType.from_parameter_value(value).value
+                    if descriptor.type == ParameterType.NOT_SET.value:
+                        msg = (
+                            'Cannot declare a statically typed parameter with default value '
+                            'of type PARAMETER_NOT_SET'
+                        )
+                        raise ValueError(msg)
+            if not ignore_override and name in self._overrides:
+                value = self._overrides[name].value
+            parameter_list.append(Parameter(name, value=value))
+            descriptors[name] = descriptor
         with self._lock:
-            already = [p.name for p, _ in declared if p.name in self._parameters]
+            already = [p.name for p in parameter_list if p.name in self._parameters]
             if already:
                 raise ParameterAlreadyDeclaredException(already)
-            for parameter, descriptor in declared:
-                result = self._apply([parameter], {parameter.name: descriptor}, declaring=True)
-                if not result.successful:
-                    if result.reason.startswith(_WRONG_TYPE_PREFIX):
-                        expected = ParameterType(descriptor.type).name
-                        raise InvalidParameterTypeException(parameter, expected)
-                    raise InvalidParameterValueException(
-                        parameter.name, parameter.value, result.reason
-                    )
-        return [parameter for parameter, _ in declared]
+            self._declare_common(parameter_list, descriptors)
+            return [self._parameters[p.name] for p in parameter_list]
+
+    def _declare_common(
+        self, parameter_list: list[Parameter], descriptors: dict[str, ParameterDescriptor]
+    ) -> None:
+        for parameter in parameter_list:
+            result = self._set_common([parameter], descriptors, allow_not_set_type=True)
+            if not result.successful:
+                if result.reason.startswith(_WRONG_TYPE_PREFIX):
+                    expected = ParameterType(descriptors[parameter.name].type).name
+                    raise InvalidParameterTypeException(parameter, expected)
+                raise InvalidParameterValueException(
+                    parameter.name, parameter.value, result.reason
+                )
 
     def undeclare_parameter(self, name: str) -> None:
         """Remove a declared parameter; read-only parameters cannot be removed."""
@@ -378,6 +470,8 @@ class ParameterStore:
             del self._parameters[name]
             del self._descriptors[name]
 
+    # -- reading -------------------------------------------------------------------------------
+
     def has_parameter(self, name: str) -> bool:
         """Whether ``name`` is declared."""
         return name in self._parameters
@@ -388,7 +482,7 @@ class ParameterStore:
 
         :raises ParameterNotDeclaredException: when it is not declared (and undeclared
             parameters are not allowed).
-        :raises ParameterUninitializedException: for a typed parameter without a value yet.
+        :raises ParameterUninitializedException: for a static parameter without a value yet.
         """
         with self._lock:
             parameter = self._parameters.get(name)
@@ -396,11 +490,8 @@ class ParameterStore:
                 if self._allow_undeclared:
                     return Parameter(name, ParameterType.NOT_SET, None)
                 raise ParameterNotDeclaredException(name)
-            descriptor = self._descriptors[name]
-            if (
-                parameter.type_ is ParameterType.NOT_SET
-                and descriptor.type != ParameterType.NOT_SET.value
-                and not descriptor.dynamic_typing
+            if parameter.type_ is ParameterType.NOT_SET and not (
+                self._descriptors[name].dynamic_typing
             ):
                 raise ParameterUninitializedException(name)
             return parameter
@@ -410,122 +501,228 @@ class ParameterStore:
         return [self.get_parameter(name) for name in names]
 
     def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter:
-        """Return the declared parameter ``name``, else ``alternative_value``."""
+        """Return the parameter, else ``alternative_value`` (also for an uninitialized one)."""
         if alternative_value is None:
             alternative_value = Parameter(name, ParameterType.NOT_SET)
-        return self._parameters.get(name, alternative_value)
+        with self._lock:
+            parameter = self._parameters.get(name)
+            if parameter is None:
+                return alternative_value
+            if parameter.type_ is ParameterType.NOT_SET and not (
+                self._descriptors[name].dynamic_typing
+            ):
+                return alternative_value
+            return parameter
 
     def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
         """Return the parameters under ``prefix.`` keyed by the rest of their names."""
         start = f'{prefix}.' if prefix else ''
-        return {
-            name[len(start) :]: parameter
-            for name, parameter in self._parameters.items()
-            if name.startswith(start)
-        }
+        with self._lock:
+            return {
+                name[len(start) :]: parameter
+                for name, parameter in self._parameters.items()
+                if name.startswith(start)
+            }
 
     def describe_parameter(self, name: str) -> ParameterDescriptor:
         """Return the descriptor of a declared parameter."""
         with self._lock:
-            if name not in self._descriptors:
-                raise ParameterNotDeclaredException(name)
-            return self._descriptors[name]
+            descriptor = self._descriptors.get(name)
+            if descriptor is not None:
+                return descriptor
+            if self._allow_undeclared:
+                return ParameterDescriptor()
+            raise ParameterNotDeclaredException(name)
 
     def names(self) -> list[str]:
         """Return the declared parameter names, sorted."""
-        return sorted(self._parameters)
+        with self._lock:
+            return sorted(self._parameters)
+
+    # -- setting -------------------------------------------------------------------------------
 
     def set_parameters(self, parameter_list: Sequence[Parameter]) -> list[SetParametersResult]:
         """
         Set parameters one by one; each gets its own result (a rejection is not an error).
 
-        :raises ParameterNotDeclaredException: when one of them is not declared.
+        :raises ParameterNotDeclaredException: at the first parameter that is not declared
+            (the ones before it stay set, as in rclpy).
         """
-        self._check_declared(parameter_list)
-        return [self._apply([parameter], None, declaring=False) for parameter in parameter_list]
+        return [self._set_atomically([parameter]) for parameter in parameter_list]
 
     def set_parameters_atomically(
         self, parameter_list: Sequence[Parameter]
     ) -> SetParametersResult:
         """Set all parameters or none of them."""
-        self._check_declared(parameter_list)
-        return self._apply(list(parameter_list), None, declaring=False)
+        return self._set_atomically(list(parameter_list))
 
-    def _check_declared(self, parameter_list: Sequence[Parameter]) -> None:
-        if self._allow_undeclared:
-            return
-        undeclared = [p.name for p in parameter_list if p.name not in self._parameters]
-        if undeclared:
-            raise ParameterNotDeclaredException(undeclared)
-
-    def add_on_set_parameters_callback(self, callback: OnSetCallback) -> None:
-        """Add a validation callback; the newest one runs first, as in rclpy."""
+    def _set_atomically(self, parameter_list: list[Parameter]) -> SetParametersResult:
         with self._lock:
-            self._on_set_callbacks.insert(0, callback)
+            if self._pre_set_callbacks:
+                modified: list[Parameter] = []
+                for callback in list(self._pre_set_callbacks):
+                    modified.extend(callback(parameter_list))
+                parameter_list = modified
+                if not parameter_list:
+                    return SetParametersResult(
+                        successful=False,
+                        reason='parameter list cannot be empty, this might be due to '
+                        'pre_set_parameters_callback modifying the original parameters list.',
+                    )
+            if not all(isinstance(parameter, Parameter) for parameter in parameter_list):
+                msg = f"parameter must be instance of type '{Parameter!r}'"
+                raise TypeError(msg)
+            undeclared = [p.name for p in parameter_list if p.name not in self._parameters]
+            if undeclared and not self._allow_undeclared:
+                raise ParameterNotDeclaredException(undeclared)
+            return self._set_common(parameter_list, None, allow_not_set_type=False)
 
-    def remove_on_set_parameters_callback(self, callback: OnSetCallback) -> None:
-        """Remove a callback added with :meth:`add_on_set_parameters_callback`."""
-        with self._lock:
-            self._on_set_callbacks.remove(callback)
-
-    def _apply(
+    def _set_common(
         self,
         parameter_list: list[Parameter],
         descriptors: dict[str, ParameterDescriptor] | None,
         *,
-        declaring: bool,
+        allow_not_set_type: bool,
     ) -> SetParametersResult:
         with self._lock:
             known = descriptors if descriptors is not None else self._descriptors
-            checked: list[Parameter] = []
             for parameter in parameter_list:
-                descriptor = known.get(parameter.name) or ParameterDescriptor(
-                    name=parameter.name, dynamic_typing=True
+                descriptor = known.get(parameter.name)
+                if descriptor is None:
+                    continue
+                result = self._apply_descriptor(
+                    parameter, descriptor, check_read_only=descriptors is None
                 )
-                result = _check_descriptor(parameter, descriptor, declaring=declaring)
                 if not result.successful:
                     return result
-                checked.append(parameter)
-            result = SetParametersResult(successful=True)
             for callback in list(self._on_set_callbacks):
-                result = callback(list(checked))
-                if not isinstance(result, SetParametersResult) and not hasattr(
-                    result, 'successful'
-                ):
-                    msg = 'on-set parameters callback must return a SetParametersResult'
-                    raise TypeError(msg)
-                if not result.successful:
+                result = callback(list(parameter_list))
+                if not getattr(result, 'successful', False):
+                    if not hasattr(result, 'successful'):
+                        msg = 'on-set parameters callback must return a SetParametersResult'
+                        raise TypeError(msg)
                     return result
-            for parameter in checked:
-                self._parameters[parameter.name] = parameter
+            for parameter in parameter_list:
+                if not allow_not_set_type and parameter.type_ is ParameterType.NOT_SET:
+                    self._parameters.pop(parameter.name, None)
+                    self._descriptors.pop(parameter.name, None)
+                    continue
                 if descriptors is not None:
                     self._descriptors[parameter.name] = descriptors[parameter.name]
                 elif parameter.name not in self._descriptors:
                     self._descriptors[parameter.name] = ParameterDescriptor(
                         name=parameter.name, dynamic_typing=True
                     )
-                elif self._descriptors[parameter.name].type == ParameterType.NOT_SET.value:
-                    self._descriptors[parameter.name].type = parameter.type_.value
-            return result
+                self._parameters[parameter.name] = parameter
+            post_callbacks = list(self._post_set_callbacks)
+        for post_callback in post_callbacks:
+            post_callback(list(parameter_list))
+        return SetParametersResult(successful=True)
+
+    def _apply_descriptor(
+        self, parameter: Parameter, descriptor: ParameterDescriptor, *, check_read_only: bool
+    ) -> SetParametersResult:
+        """Check a value against its descriptor: read-only, static type, ranges (rclpy's)."""
+        descriptor.name = parameter.name
+        if check_read_only and descriptor.read_only:
+            reason = f'Trying to set a read-only parameter: {parameter.name}.'
+            return SetParametersResult(successful=False, reason=reason)
+        if descriptor.dynamic_typing:
+            descriptor.type = parameter.type_.value
+        elif parameter.name in self._parameters and parameter.type_ is ParameterType.NOT_SET:
+            return SetParametersResult(
+                successful=False, reason='Static parameter cannot be undeclared'
+            )
+        elif (
+            parameter.type_ is not ParameterType.NOT_SET
+            and parameter.type_.value != descriptor.type
+        ):
+            reason = (
+                f"Wrong parameter type, expected '{ParameterType(descriptor.type)}' "
+                f"got '{parameter.type_}'"
+            )
+            return SetParametersResult(successful=False, reason=reason)
+        if parameter.type_ is ParameterType.INTEGER and descriptor.integer_range:
+            return _check_integer_range(parameter, descriptor.integer_range[0])
+        if parameter.type_ is ParameterType.DOUBLE and descriptor.floating_point_range:
+            return _check_floating_point_range(parameter, descriptor.floating_point_range[0])
+        return SetParametersResult(successful=True)
+
+    # -- callbacks -----------------------------------------------------------------------------
+
+    def add_pre_set_parameters_callback(self, callback: PreSetCallback) -> None:
+        """Add a callback that may rewrite the list before validation (newest runs first)."""
+        with self._lock:
+            self._pre_set_callbacks.insert(0, callback)
+
+    def add_on_set_parameters_callback(self, callback: OnSetCallback) -> None:
+        """Add a validation callback; the newest one runs first, as in rclpy."""
+        with self._lock:
+            self._on_set_callbacks.insert(0, callback)
+
+    def add_post_set_parameters_callback(self, callback: PostSetCallback) -> None:
+        """Add a callback run after parameters were set (newest runs first)."""
+        with self._lock:
+            self._post_set_callbacks.insert(0, callback)
+
+    def remove_pre_set_parameters_callback(self, callback: PreSetCallback) -> None:
+        """Remove a pre-set callback (ValueError when absent, as list.remove)."""
+        with self._lock:
+            self._pre_set_callbacks.remove(callback)
+
+    def remove_on_set_parameters_callback(self, callback: OnSetCallback) -> None:
+        """Remove an on-set callback (ValueError when absent, as list.remove)."""
+        with self._lock:
+            self._on_set_callbacks.remove(callback)
+
+    def remove_post_set_parameters_callback(self, callback: PostSetCallback) -> None:
+        """Remove a post-set callback (ValueError when absent, as list.remove)."""
+        with self._lock:
+            self._post_set_callbacks.remove(callback)
 
 
-def _check_descriptor(
-    parameter: Parameter, descriptor: ParameterDescriptor, *, declaring: bool
-) -> SetParametersResult:
-    """Check a new value against its descriptor (read-only, static type)."""
-    if descriptor.read_only and not declaring:
-        reason = f'Trying to set a read-only parameter: {parameter.name}.'
+def _check_integer_range(parameter: Parameter, allowed: IntegerRange) -> SetParametersResult:
+    low = min(allowed.from_value, allowed.to_value)
+    high = max(allowed.from_value, allowed.to_value)
+    value = parameter.value
+    if value in (low, high):
+        return SetParametersResult(successful=True)
+    if not low < value < high:
+        reason = (
+            f'Parameter {parameter.name} out of range. Min: {low}, Max: {high}, value: {value}'
+        )
         return SetParametersResult(successful=False, reason=reason)
-    expected = ParameterType(descriptor.type)
-    if (
-        descriptor.dynamic_typing
-        or expected is ParameterType.NOT_SET
-        or (parameter.type_ is ParameterType.NOT_SET and declaring)
-        or parameter.type_ is expected
+    if allowed.step != 0 and (value - low) % allowed.step != 0:
+        reason = (
+            f'The parameter value for {parameter.name} is not a valid step. '
+            f'Min: {low}, max: {high}, value: {value}, step: {allowed.step}'
+        )
+        return SetParametersResult(successful=False, reason=reason)
+    return SetParametersResult(successful=True)
+
+
+def _check_floating_point_range(
+    parameter: Parameter, allowed: FloatingPointRange
+) -> SetParametersResult:
+    low = min(allowed.from_value, allowed.to_value)
+    high = max(allowed.from_value, allowed.to_value)
+    value = parameter.value
+    if math.isclose(value, low, rel_tol=PARAM_REL_TOL) or math.isclose(
+        value, high, rel_tol=PARAM_REL_TOL
     ):
         return SetParametersResult(successful=True)
-    reason = f"Wrong parameter type, expected '{expected}' got '{parameter.type_}'"
-    return SetParametersResult(successful=False, reason=reason)
+    if not low < value < high:
+        reason = f'Parameter {parameter.name} out of range Min: {low}, Max: {high}, value: {value}'
+        return SetParametersResult(successful=False, reason=reason)
+    if allowed.step != 0.0:
+        steps = round((value - low) / allowed.step)
+        if not math.isclose(low + steps * allowed.step, value, rel_tol=PARAM_REL_TOL):
+            reason = (
+                f'The parameter value for {parameter.name} is not close enough to a valid step. '
+                f'Min: {low}, max: {high}, value: {value}, step: {allowed.step}'
+            )
+            return SetParametersResult(successful=False, reason=reason)
+    return SetParametersResult(successful=True)
 
 
 if rclpy_world():  # pragma: no cover - needs a ROS 2 installation

@@ -90,7 +90,7 @@ def clock_exports() -> dict[str, Any]:
 
 def parameter_exports() -> dict[str, Any]:
     """Return rclpy's parameter objects under the names of ``parameters``."""
-    from rcl_interfaces.msg import ParameterDescriptor  # type: ignore[import-not-found]
+    from rcl_interfaces.msg import ParameterDescriptor
     from rcl_interfaces.msg import SetParametersResult
 
     exports = _public(
