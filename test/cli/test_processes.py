@@ -337,7 +337,7 @@ def test_saver_loader_round_trip(spawn, peers, tmp_path):
         dynamic('odom', 'base_link', rate=20.0, t=[0.5, 0.0, 0.0]),
         static('base_link', 'laser', t=(0.1, 0.0, 0.2), q=(0.0, 0.0, 1.0, 0.0)),
     )
-    code, _, err = run(spawn, 'tf_saver', '-t', '2', '-o', 'first.yaml')
+    code, _, err = run(spawn, 'tf_saver', '-t', '3', '-o', 'first.yaml')
     assert code == 0, err
     first = read_snapshot(tmp_path / 'first.yaml')
     assert [(e.parent, e.child, e.is_static) for e in first.transforms] == [
@@ -349,7 +349,7 @@ def test_saver_loader_round_trip(spawn, peers, tmp_path):
     source.send_signal(signal.SIGINT)
     source.wait(timeout=10)
     loader = spawn.start('tf_loader', 'first.yaml')
-    code, _, err = run(spawn, 'tf_saver', '-t', '2', '-o', 'second.yaml')
+    code, _, err = run(spawn, 'tf_saver', '-t', '3', '-o', 'second.yaml')
     assert code == 0, err
     second = read_snapshot(tmp_path / 'second.yaml')
     assert [(e.parent, e.child, e.translation, e.rotation) for e in second.transforms] == [
@@ -368,7 +368,7 @@ def test_saver_chosen_frames_and_flatten(spawn, peers, tmp_path):
         static('base_link', 'laser', t=(0.0, 0.0, 3.0)),
         static('base_link', 'cam'),
     )
-    code, _, err = run(spawn, 'tf_saver', '-t', '1.5', '-o', 'part.yaml', 'odom', 'laser')
+    code, _, err = run(spawn, 'tf_saver', '-t', '3', '-o', 'part.yaml', 'odom', 'laser')
     assert code == 0, err
     part = read_snapshot(tmp_path / 'part.yaml')
     assert [(e.parent, e.child) for e in part.transforms] == [
@@ -376,7 +376,7 @@ def test_saver_chosen_frames_and_flatten(spawn, peers, tmp_path):
         ('base_link', 'laser'),
     ]
     code, _, err = run(
-        spawn, 'tf_saver', '-t', '1.5', '-o', 'flat.yaml', '--flatten', 'map', 'laser'
+        spawn, 'tf_saver', '-t', '3', '-o', 'flat.yaml', '--flatten', 'map', 'laser'
     )
     assert code == 0, err
     flat = read_snapshot(tmp_path / 'flat.yaml')
