@@ -36,6 +36,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from collections.abc import Sequence
+from itertools import repeat
 from struct import Struct
 import sys
 from typing import Any
@@ -108,17 +109,13 @@ class JointStateThrottle:
         if ignore_timestamp:
             return True
         last = now_ns
-        last_published = self.last_published_ns
-        for name in names:
-            seen = last_published.get(name, 0)
-            last = min(last, seen)
+        if names:
+            last = min(last, *map(self.last_published_ns.get, names, repeat(0)))
         return stamp_ns >= last + interval_ns
 
     def record(self, names: Iterable[str], stamp_ns: int) -> None:
         """Remember ``stamp_ns`` as the last published time of every name (known or not)."""
-        last_published = self.last_published_ns
-        for name in names:
-            last_published[name] = stamp_ns
+        self.last_published_ns.update(dict.fromkeys(names, stamp_ns))
 
 
 def joint_state_problem(
@@ -145,11 +142,11 @@ def positions_from_joint_state(
     names: Sequence[str], positions: Sequence[float]
 ) -> dict[str, float]:
     """Map names to positions; when a name repeats, its first position wins (as upstream)."""
-    values: dict[str, float] = {}
-    for name, position in zip(names, positions, strict=True):
-        if name not in values:
-            values[name] = position
-    return values
+    if len(names) != len(positions):
+        msg = f'{len(names)} names but {len(positions)} positions'
+        raise ValueError(msg)
+    # later duplicates are written first, so the first occurrence is the one that stays
+    return dict(zip(reversed(names), reversed(positions), strict=True))
 
 
 _HEADER = b'\x00\x01\x00\x00'
@@ -308,9 +305,46 @@ def _build_node_class() -> type:
                 sensor_msgs.JointState,
                 'joint_states',
                 self._on_joint_state,
-                qos_profile_sensor_data,
+                self._qos_with_overrides(
+                    self._resolved('joint_states'),
+                    'subscription',
+                    _copy_qos(qos_profile_sensor_data),
+                    _JOINT_STATES_OVERRIDABLE,
+                ),
             )
             self._publish_fixed_transforms()
+
+        # -- QoS overrides (upstream: QosOverridingOptions::with_default_policies) -----------
+        def _resolved(self, topic: str) -> str:
+            try:
+                return str(self.resolve_topic_name(topic))
+            except (AttributeError, TypeError):
+                namespace = self.get_namespace().rstrip('/')
+                return f'{namespace}/{topic}'
+
+        def _qos_with_overrides(
+            self, topic: str, entity: str, profile: Any, policies: tuple[str, ...]
+        ) -> Any:
+            """Apply ``qos_overrides.<topic>.<entity>.<policy>`` parameters (read at start)."""
+            for policy in policies:
+                name = f'qos_overrides.{topic}.{entity}.{policy}'
+                current = getattr(profile, policy)
+                default = current if policy == 'depth' else current.name.lower()
+                value = self.declare_parameter(name, default).value
+                try:
+                    if policy == 'depth':
+                        profile.depth = int(value)
+                    else:
+                        enum = {
+                            'history': HistoryPolicy,
+                            'reliability': ReliabilityPolicy,
+                            'durability': DurabilityPolicy,
+                        }[policy]
+                        setattr(profile, policy, enum[str(value).upper()])
+                except (KeyError, ValueError):
+                    msg = f'invalid value {value!r} for parameter {name}'
+                    raise RobotDescriptionError(msg) from None
+            return profile
 
         # -- model ---------------------------------------------------------------------------
         def _announce_model(self, xml: str) -> None:
@@ -419,6 +453,21 @@ def _build_node_class() -> type:
             )
 
     return RobotStatePublisher
+
+
+_JOINT_STATES_OVERRIDABLE = ('history', 'depth', 'reliability')
+_TF_OVERRIDABLE = ('depth', 'durability', 'history', 'reliability')
+_TF_STATIC_OVERRIDABLE = ('depth', 'history', 'reliability')
+
+
+def _copy_qos(profile: Any) -> Any:
+    """Return an independent copy of a QoS profile (presets must not be modified)."""
+    return type(profile)(
+        history=profile.history,
+        depth=profile.depth,
+        reliability=profile.reliability,
+        durability=profile.durability,
+    )
 
 
 def _parameter(name: str, value: Any) -> Any:

@@ -74,49 +74,44 @@ def kdl_quaternion(x: float, y: float, z: float, w: float) -> Quat:
     return (x, y, z, w)
 
 
-class _MovingJoint:
-    """Precomputed constants of one revolute, continuous or prismatic joint."""
+# One moving joint, precomputed: (name, is_revolute, parent, child, origin translation,
+# origin quaternion x y z w, u x y z, d, KDL-signed origin quaternion). For a revolute joint
+# q_origin * (axis sin(a/2), cos(a/2)) = (q_v cos(a/2) + u sin(a/2), w cos(a/2) - d sin(a/2))
+# with u = w axis + q_v x axis and d = q_v . axis; for a prismatic joint u = R_origin axis.
+_MovingJoint = tuple[
+    str, bool, str, str, Vec3, float, float, float, float, float, float, float, float, Quat
+]
 
-    __slots__ = ('child', 'd', 'kind', 'parent', 'q', 't', 'u')
 
-    def __init__(self, joint: JointDescription) -> None:
-        ax, ay, az = joint.axis
-        norm = math.sqrt(ax * ax + ay * ay + az * az)
-        axis = (ax / norm, ay / norm, az / norm)
-        self.parent = joint.parent
-        self.child = joint.child
-        self.t = joint.xyz
-        qx, qy, qz, qw = quat_from_rpy(*joint.rpy)
-        self.q = (qx, qy, qz, qw)
-        if joint.type == 'prismatic':
-            self.kind = _PRISMATIC
-            self.u = tuple(rotate_vector(self.q, axis))
-            self.d = 0.0
-        else:
-            self.kind = _REVOLUTE
-            # q_origin * (axis sin(a/2), cos(a/2)) = q_v c + u s, w c - d s
-            self.u = (
-                qw * axis[0] + qy * axis[2] - qz * axis[1],
-                qw * axis[1] + qz * axis[0] - qx * axis[2],
-                qw * axis[2] + qx * axis[1] - qy * axis[0],
-            )
-            self.d = qx * axis[0] + qy * axis[1] + qz * axis[2]
-
-    def transform(self, position: float) -> JointTransform:
-        if self.kind == _REVOLUTE:
-            half = 0.5 * position
-            s = math.sin(half)
-            c = math.cos(half)
-            qx, qy, qz, qw = self.q
-            ux, uy, uz = self.u
-            rotation = kdl_quaternion(
-                qx * c + ux * s, qy * c + uy * s, qz * c + uz * s, qw * c - self.d * s
-            )
-            return (self.parent, self.child, self.t, rotation)
-        tx, ty, tz = self.t
-        ux, uy, uz = self.u
-        translation = (tx + position * ux, ty + position * uy, tz + position * uz)
-        return (self.parent, self.child, translation, kdl_quaternion(*self.q))
+def _moving_joint(joint: JointDescription) -> _MovingJoint:
+    ax, ay, az = joint.axis
+    norm = math.sqrt(ax * ax + ay * ay + az * az)
+    ax, ay, az = ax / norm, ay / norm, az / norm
+    qx, qy, qz, qw = quat_from_rpy(*joint.rpy)
+    if joint.type == 'prismatic':
+        ux, uy, uz = rotate_vector((qx, qy, qz, qw), (ax, ay, az))
+        d = 0.0
+    else:
+        ux = qw * ax + qy * az - qz * ay
+        uy = qw * ay + qz * ax - qx * az
+        uz = qw * az + qx * ay - qy * ax
+        d = qx * ax + qy * ay + qz * az
+    return (
+        joint.name,
+        joint.type != 'prismatic',
+        joint.parent,
+        joint.child,
+        joint.xyz,
+        qx,
+        qy,
+        qz,
+        qw,
+        ux,
+        uy,
+        uz,
+        d,
+        kdl_quaternion(qx, qy, qz, qw),
+    )
 
 
 class RobotModel:
@@ -135,8 +130,7 @@ class RobotModel:
         self._movable = [
             j.name for j in joints if j.type in {'revolute', 'continuous', 'prismatic'}
         ]
-        self._moving = {name: _MovingJoint(self._joints[name]) for name in self._movable}
-        self._moving_sorted = sorted(self._moving.items())
+        self._moving_sorted = sorted(_moving_joint(self._joints[name]) for name in self._movable)
         self._mimics = _mimics_in_dependency_order(joints)
         self._static: list[JointTransform] = []
         self.warnings: list[str] = []
@@ -244,11 +238,58 @@ class RobotModel:
             ignored, mimic joints are filled in from their sources.
         """
         values = self.resolve_positions(positions) if self._mimics else positions
-        return [
-            moving.transform(values[name])
-            for name, moving in self._moving_sorted
-            if name in values
-        ]
+        transforms: list[JointTransform] = []
+        append = transforms.append
+        sin = math.sin
+        cos = math.cos
+        for (
+            name,
+            revolute,
+            parent,
+            child,
+            t,
+            qx,
+            qy,
+            qz,
+            qw,
+            ux,
+            uy,
+            uz,
+            d,
+            q0,
+        ) in self._moving_sorted:
+            position = values.get(name)
+            if position is None:
+                continue
+            if not revolute:
+                append(
+                    (
+                        parent,
+                        child,
+                        (t[0] + position * ux, t[1] + position * uy, t[2] + position * uz),
+                        q0,
+                    )
+                )
+                continue
+            s = sin(0.5 * position)
+            c = cos(0.5 * position)
+            x = qx * c + ux * s
+            y = qy * c + uy * s
+            z = qz * c + uz * s
+            w = qw * c - d * s
+            # KDL's sign: w > 0 in the trace branch, else the largest-diagonal component > 0
+            if 4.0 * w * w - 1.0 > 1e-12:
+                negative = w < 0.0
+            else:
+                xx, yy, zz = x * x, y * y, z * z
+                if xx > yy and xx > zz:
+                    negative = x < 0.0
+                elif yy > zz:
+                    negative = y < 0.0
+                else:
+                    negative = z < 0.0
+            append((parent, child, t, (-x, -y, -z, -w) if negative else (x, y, z, w)))
+        return transforms
 
     def link_poses(self, positions: Mapping[str, float]) -> dict[str, tuple[Vec3, Quat]]:
         """
