@@ -230,3 +230,10 @@ def test_executable_with_bad_arguments_exits_1_with_usage(
     assert lines[1].startswith('node.py: error: ')
     assert message in lines[1]
     assert 'Traceback' not in completed.stderr
+
+
+def test_node_prefixed_param_rule_names_the_node_key_as_rcl_does() -> None:
+    """-p talker:x:=1 is the key /talker: it does not reach /ns/talker."""
+    parsed = parse_ros_args(['--ros-args', '-p', 'talker:x:=1'])
+    assert set(parsed.parameter_overrides('/talker')) == {'x'}
+    assert parsed.parameter_overrides('/ns/talker') == {}

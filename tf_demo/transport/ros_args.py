@@ -150,11 +150,11 @@ class RosArgs:
 
     def parameter_overrides(self, node_fqn: str) -> dict[str, Parameter]:
         """Return the overrides that apply to the node ``node_fqn`` (later sources win)."""
-        node_name = node_fqn.rsplit('/', 1)[-1]
         overrides: dict[str, Parameter] = {}
         for source in self.parameter_sources:
             if isinstance(source, ParamRule):
-                if source.node is None or source.node in (node_name, node_fqn.lstrip('/')):
+                # A node prefix is a node key as in a params file (``talker`` is ``/talker``).
+                if source.node is None or _node_key_matches(source.node, node_fqn):
                     overrides[source.name] = Parameter(source.name, value=source.value)
                 continue
             for key, values in source.entries:
