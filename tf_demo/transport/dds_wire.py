@@ -35,6 +35,7 @@ imperative shell around the one DDS participant of the process.
 
 from __future__ import annotations
 
+import atexit
 from collections.abc import Callable
 from collections.abc import Mapping
 import contextlib
@@ -843,14 +844,20 @@ class DdsParticipant:
 
 _participant: DdsParticipant | None = None
 _participant_lock = threading.Lock()
+_exit_hook_installed = False
 
 
 def get_participant(warn: Callable[[str], None] = print) -> DdsParticipant:
     """Return the process' participant, creating it from the environment on first use."""
-    global _participant
+    global _participant, _exit_hook_installed
     with _participant_lock:
         if _participant is None or _participant._closed:
             _participant = DdsParticipant(warn=warn)
+            if not _exit_hook_installed:
+                # Delete the DDS entities (and with them the listener callbacks into Python)
+                # before the interpreter starts tearing modules down.
+                atexit.register(close_participant)
+                _exit_hook_installed = True
         return _participant
 
 
