@@ -17,9 +17,11 @@
 import json
 from pathlib import Path
 import re
+import select
 import signal
 import subprocess
 import sys
+import time
 
 import pytest
 from tf_demo.cli._snapshot import read_snapshot
@@ -221,6 +223,43 @@ def test_echo_json_and_inverse_direction(spawn, peers):
     record = json.loads(out)
     assert record['translation'] == [-1.0, 0.0, 0.0]
     assert record['source_frame'] == 'laser'
+
+
+def read_until(process, marker, limit_s=60.0):
+    """Read the process' stdout until a line equal to ``marker`` (a guard against hangs)."""
+    deadline = time.monotonic() + limit_s
+    lines = []
+    while time.monotonic() < deadline:
+        ready, _, _ = select.select([process.stdout], [], [], 0.5)
+        if not ready:
+            continue
+        line = process.stdout.readline()
+        if not line:
+            break
+        lines.append(line)
+        if line.startswith(marker):
+            return lines
+    pytest.fail(f'no line starting with {marker!r} in: {"".join(lines)}')
+    return lines
+
+
+def test_echo_failure_block_when_the_tree_changes(spawn, peers):
+    """When 'laser' gets another parent, tf_echo prints tf2_echo's failure block and goes on."""
+    peers(static('base', 'laser', t=(1.0, 0.0, 0.0)))
+    echo = spawn.start('tf_echo', 'base', 'laser', '10')
+    read_until(echo, 'At time')
+    peers(dynamic('other', 'laser', rate=20.0))
+    lines = read_until(echo, 'Failure at')
+    lines += [echo.stdout.readline() for _ in range(3)]
+    tail = lines[-4:]
+    assert re.fullmatch(r'Failure at \d+\.\d{3}\n', tail[0])
+    assert tail[1] == (
+        "Exception thrown:Could not find a connection between 'base' and 'laser' because "
+        'they are not part of the same tree.Tf has two or more unconnected trees.\n'
+    )
+    assert tail[2] == 'The current list of frames is:\n'
+    assert tail[3] == 'Frame laser exists with parent other.\n'
+    assert echo.stdout.readline() == '\n'
 
 
 # --- view_frames ---------------------------------------------------------------------------------
