@@ -213,13 +213,19 @@ def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> i
 
 
 def _finish(node: Any) -> None:
-    """Destroy the node (flushing its publishers) and shut the backend down, quietly."""
+    """
+    Destroy the node (flushing its publishers) and shut the backend down, quietly.
+
+    A Ctrl-C while this runs skips the rest of the clean-up instead of printing a traceback.
+    """
     try:
-        if node is not None:
-            node.destroy_node()
-    finally:
         try:
+            if node is not None:
+                node.destroy_node()
+        finally:
             if ok():
                 shutdown()
-        except Exception as error:  # a failed shutdown must not turn exit 0 into a traceback
-            print(f'warning: shutdown failed: {error}', file=sys.stderr)
+    except KeyboardInterrupt:
+        pass
+    except Exception as error:  # a failed clean-up must not turn exit 0 into a traceback
+        print(f'warning: clean shutdown failed: {error}', file=sys.stderr)
