@@ -16,6 +16,8 @@
 
 import threading
 
+from hypothesis import given
+from hypothesis import strategies as st
 import pytest
 from tf_demo.msgs import builtin_interfaces
 from tf_demo.transport.clock import Clock
@@ -229,3 +231,32 @@ def test_sleep_for_on_the_system_clock_reaches_its_target() -> None:
     start = clock.now()
     assert clock.sleep_for(Duration(seconds=0.05))
     assert clock.now() - start >= Duration(seconds=0.05)
+
+
+INT64 = st.integers(min_value=-(2**63), max_value=2**63 - 1)
+TIME_NS = st.integers(min_value=0, max_value=2**63 - 1)
+
+
+@pytest.mark.property
+@given(INT64)
+def test_duration_message_round_trip_for_every_int64(nanoseconds: int) -> None:
+    """Duration -> message -> Duration is the identity, with 0 <= nanosec < 1e9."""
+    msg = Duration(nanoseconds=nanoseconds).to_msg()
+    assert 0 <= msg.nanosec < 10**9
+    assert msg.sec * 10**9 + msg.nanosec == nanoseconds
+    assert Duration.from_msg(msg).nanoseconds == nanoseconds
+
+
+@pytest.mark.property
+@given(TIME_NS, st.integers(min_value=0, max_value=2**62))
+def test_adding_then_subtracting_a_duration_is_the_identity(start: int, step: int) -> None:
+    """(t + d) - d == t and (t + d) - t == d whenever t + d fits in int64."""
+    t = Time(nanoseconds=start, clock_type=ROS)
+    d = Duration(nanoseconds=step)
+    if start + step >= 2**63:
+        with pytest.raises(OverflowError):
+            _ = t + d
+        return
+    assert (t + d) - d == t
+    assert (t + d) - t == d
+    assert t <= t + d
