@@ -231,3 +231,21 @@ def test_stopped_stream():
     finding = next(f for f in diagnose(stopped + later) if f.kind == 'stopped')
     assert finding.frames == ('base_link',)
     assert 'stopped arriving 3.000 s' in finding.message
+
+
+def test_publisher_restart_is_not_a_fight():
+    """One publisher replaced by another (a restart) is not reported as fighting."""
+    first = stream('odom', 'base_link', pub='p1')
+    second = [
+        Observation(
+            o.topic,
+            o.receive_ns + 3 * S,
+            tuple(
+                ObservedTransform(t.parent, t.child, t.stamp_ns + 3 * S, t.translation)
+                for t in o.transforms
+            ),
+            'p2',
+        )
+        for o in stream('odom', 'base_link', pub='p2')
+    ]
+    assert diagnose([static('map', 'odom'), *first, *second]) == []

@@ -366,6 +366,26 @@ def test_doctor_finds_timing_and_publisher_faults(spawn, peers):
     assert ('publishers_fighting', 'arm') in found
 
 
+def test_doctor_names_two_publishers_of_one_frame(spawn, peers):
+    """Two nodes sending odom→base_link with smoothly moving values are told apart by writer."""
+    moving = [[0.01 * i, 0.0, 0.0] for i in range(200)]
+    peers(static('map', 'odom'), dynamic('odom', 'base_link', rate=20.0, values=moving))
+    peers(
+        dynamic(
+            'odom',
+            'base_link',
+            rate=20.0,
+            values=[[5 + v[0], 0, 0] for v in moving],
+            group='second',
+        )
+    )
+    code, report = doctor(spawn)
+    fights = [f for f in report['findings'] if f['kind'] == 'publishers_fighting']
+    assert code == 1
+    assert fights
+    assert '2 different publishers send it' in fights[0]['message']
+
+
 # --- tf_saver / tf_loader -----------------------------------------------------------------------
 
 

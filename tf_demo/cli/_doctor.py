@@ -97,6 +97,7 @@ class _ChildStats:
     parents: Counter[str] = field(default_factory=Counter)
     topics: Counter[str] = field(default_factory=Counter)
     publishers: set[str] = field(default_factory=set)
+    dynamic_publishers: list[str] = field(default_factory=list)
     parent_by_topic: dict[str, set[str]] = field(default_factory=dict)
     static_values: list[tuple[Vec3, Quat]] = field(default_factory=list)
     dynamic: list[tuple[int, int, Vec3, Quat]] = field(default_factory=list)
@@ -134,6 +135,7 @@ def _gather(observations: Sequence[Observation]) -> dict[str, _ChildStats]:
                 entry.dynamic.append(
                     (observation.receive_ns, transform.stamp_ns, value[0], value[1])
                 )
+                entry.dynamic_publishers.append(observation.publisher)
             entry.latest_parent = transform.parent
     return stats
 
@@ -366,7 +368,11 @@ def _parent_conflicts(stats: dict[str, _ChildStats], limits: Thresholds) -> list
                     'static_transform_publisher or remove the frame from one URDF.',
                 )
             )
-        dynamic_publishers = len(entry.publishers) if entry.dynamic else 0
+        senders = [p for p in entry.dynamic_publishers if p]
+        dynamic_publishers = len(set(senders))
+        switches = sum(1 for a, b in itertools.pairwise(senders) if a != b)
+        if switches < 3:
+            dynamic_publishers = 0  # one sender after another (a restart) is not a fight
         flips = _value_flips(entry.dynamic, limits.value_tolerance)
         regressions = sum(
             1 for a, b in zip(entry.dynamic, entry.dynamic[1:], strict=False) if b[1] < a[1]
@@ -374,7 +380,7 @@ def _parent_conflicts(stats: dict[str, _ChildStats], limits: Thresholds) -> list
         if dynamic_publishers > 1 or flips >= 3 or regressions >= 3:
             evidence = []
             if dynamic_publishers > 1:
-                evidence.append(f'{dynamic_publishers} different publishers send it')
+                evidence.append(f'{dynamic_publishers} different publishers send it, taking turns')
             if flips >= 3:
                 evidence.append(f'its value jumped back and forth {flips} times')
             if regressions >= 3:

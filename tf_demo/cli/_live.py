@@ -63,19 +63,28 @@ class TfRecorder:
             node.create_subscription(
                 tf2_msgs.TFMessage,
                 tf_topic,
-                lambda msg: self._record(TF_TOPIC, msg),
+                lambda msg, info: self._record(TF_TOPIC, msg, info),
                 DynamicListenerQoS(),
             ),
             node.create_subscription(
                 tf2_msgs.TFMessage,
                 tf_static_topic,
-                lambda msg: self._record(TF_STATIC_TOPIC, msg),
+                lambda msg, info: self._record(TF_STATIC_TOPIC, msg, info),
                 StaticListenerQoS(),
             ),
         ]
 
-    def _record(self, topic: str, msg: Any) -> None:
+    def _record(self, topic: str, msg: Any, info: Any = None) -> None:
+        """Record one message; ``info`` is rclpy's MessageInfo (with ``publisher_gid`` on DDS)."""
         from tf_demo.msgs.convert import transform_stamped_args
+
+        publisher = ''
+        if isinstance(info, dict):
+            gid = info.get('publisher_gid')
+            if isinstance(gid, (bytes, bytearray)):
+                publisher = bytes(gid).hex()
+            elif gid is not None:
+                publisher = str(gid)
 
         receive_ns = self._clock.now().nanoseconds
         transforms = []
@@ -99,7 +108,7 @@ class TfRecorder:
                     ),
                 )
             )
-        observation = Observation(topic, receive_ns, tuple(transforms))
+        observation = Observation(topic, receive_ns, tuple(transforms), publisher)
         with self._lock:
             if len(self._observations) < MAX_OBSERVATIONS:
                 self._observations.append(observation)
