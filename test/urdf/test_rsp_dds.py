@@ -440,3 +440,44 @@ def test_invalid_joint_states_are_warned_about_and_dropped(spawn: Any, world: Wo
     [transform] = received[0].transforms
     assert (transform.header.stamp.sec, transform.child_frame_id) == (2002, 'frame_2')
     assert rsp.process.poll() is None
+
+
+def test_jsp_takes_the_description_from_the_topic_and_merges_sources(
+    spawn: Any, world: World
+) -> None:
+    """Without a file, joint_state_publisher waits for the latched robot_description (published
+    by robot_state_publisher), publishes defaults, and republishes values from source_list."""
+    from tf_demo.transport.messages import sensor_msgs
+
+    jsp = Running(
+        spawn.start(
+            'joint_state_publisher',
+            '--ros-args',
+            '-p',
+            'rate:=20',
+            '-p',
+            'source_list:=[ext_states]',
+        )
+    )
+    jsp.wait_for('Waiting for robot_description to be published on the robot_description topic')
+    rsp = Running(
+        spawn.start(
+            'robot_state_publisher',
+            '--ros-args',
+            '-p',
+            f'urdf_file:={SAMPLES / "example_revolute.urdf"}',
+        )
+    )
+    client = world.node('jsp_client')
+    states: list[Any] = []
+    client.create_subscription(sensor_msgs.JointState, 'joint_states', states.append, 10)
+    source = client.create_publisher(sensor_msgs.JointState, 'ext_states', 10)
+    world.start()
+    wait_until(lambda: bool(states), what='joint states after the description arrived')
+    assert list(states[-1].name) == ['frame_1_to_frame_2']
+    assert list(states[-1].position) == [0.0]
+    wait_until(lambda: source.get_subscription_count() >= 1, what='source_list subscription')
+    source.publish(joint_state(['frame_1_to_frame_2', 'unknown'], [1.25, 9.0], 0))
+    wait_until(lambda: list(states[-1].position) == [1.25], what='the source value republished')
+    assert list(states[-1].name) == ['frame_1_to_frame_2']
+    assert rsp.process.poll() is None
