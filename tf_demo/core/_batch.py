@@ -51,74 +51,90 @@ _ENDING_SOURCE_PARENT = 2
 _ENDING_FULL = 3
 
 
+def _interpolate(data: FloatArray, older: IntArray, ratio: FloatArray) -> FloatArray:
+    """Interpolate rows ``older`` and ``older + 1`` of ``data`` at ``ratio`` (as TimeCache)."""
+    keep = 1.0 - ratio
+    one = data[older]
+    two = data[older + 1]
+    out = np.empty((older.shape[0], 7))
+    out[:, :3] = keep[:, None] * one[:, :3] + ratio[:, None] * two[:, :3]
+    out[:, 3:] = slerp_batch(one[:, 3:], two[:, 3:], ratio)
+    return out
+
+
 def sample_batch(
     cache: TimeCache | StaticCache, times: IntArray
-) -> tuple[FloatArray, IntArray, BoolArray]:
-    """Read ``cache`` at every time: ``(values (M, 7), parent ids (M,), ok (M,))``."""
+) -> tuple[FloatArray, IntArray, BoolArray | None]:
+    """
+    Read ``cache`` at every time: ``(values, parent ids, ok)``.
+
+    ``values`` is ``(M, 7)`` or ``(1, 7)`` (broadcasts), parent ids ``(M,)`` or ``(1,)``, and
+    ``ok`` is None when every lane succeeded.
+    """
     count = times.shape[0]
     if isinstance(cache, StaticCache):
         sample = cache.get_data(0)
-        values = np.broadcast_to(np.asarray(sample[:7], dtype=np.float64), (count, 7)).copy()
-        return values, np.full(count, sample[7], dtype=np.int64), np.ones(count, dtype=bool)
+        return (
+            np.asarray(sample[:7], dtype=np.float64).reshape(1, 7),
+            np.array([sample[7]], dtype=np.int64),
+            None,
+        )
     stamps, table = cache.arrays()
     size = stamps.shape[0]
-    values = np.zeros((count, 7))
-    parents = np.zeros(count, dtype=np.int64)
-    ok = np.zeros(count, dtype=bool)
     if size == 0:
-        return values, parents, ok
+        return np.zeros((1, 7)), np.zeros(1, dtype=np.int64), np.zeros(count, dtype=bool)
     data = table[:, :7]
     parent_ids = table[:, 7].astype(np.int64)
+    latest = stamps[-1]
+    earliest = stamps[0]
+    if size > 1 and count and times.min() > earliest and times.max() < latest:
+        # Fast path: every lane is strictly inside the history.
+        older = np.searchsorted(stamps, times, side='right') - 1
+        one_parent = parent_ids[older]
+        one_stamp = stamps[older]
+        ratio = (times - one_stamp).astype(np.float64) / (stamps[older + 1] - one_stamp).astype(
+            np.float64
+        )
+        values = _interpolate(data, older, ratio)
+        switched = one_parent != parent_ids[older + 1]
+        if switched.any():
+            values[switched] = data[older[switched]]
+        return values, one_parent, None
 
+    values = np.zeros((count, 7))
+    parents = np.zeros(count, dtype=np.int64)
     single = np.full(count, -1, dtype=np.int64)
     zero = times == 0
     single[zero] = size - 1
     if size == 1:
-        match = ~zero & (times == stamps[0])
-        single[match] = 0
-        chosen = single >= 0
-        values[chosen] = data[single[chosen]]
-        parents[chosen] = parent_ids[single[chosen]]
-        ok[chosen] = True
-        return values, parents, ok
-
-    latest = stamps[-1]
-    earliest = stamps[0]
-    at_latest = ~zero & (times == latest)
-    single[at_latest] = size - 1
-    at_earliest = ~zero & ~at_latest & (times == earliest)
-    single[at_earliest] = 0
-    inside = ~zero & ~at_latest & ~at_earliest & (times < latest) & (times > earliest)
-    lanes = np.flatnonzero(inside)
-    if lanes.size:
-        older = np.searchsorted(stamps, times[lanes], side='right') - 1
-        newer = older + 1
-        same_parent = parent_ids[older] == parent_ids[newer]
-        single[lanes[~same_parent]] = older[~same_parent]
-        lanes = lanes[same_parent]
-        older = older[same_parent]
-        newer = newer[same_parent]
+        single[~zero & (times == stamps[0])] = 0
+    else:
+        at_latest = ~zero & (times == latest)
+        single[at_latest] = size - 1
+        at_earliest = ~zero & ~at_latest & (times == earliest)
+        single[at_earliest] = 0
+        inside = ~zero & (times < latest) & (times > earliest)
+        lanes = np.flatnonzero(inside)
         if lanes.size:
-            one_stamp = stamps[older]
-            two_stamp = stamps[newer]
-            equal = two_stamp == one_stamp
-            span = np.where(equal, 1, two_stamp - one_stamp).astype(np.float64)
-            ratio = (times[lanes] - one_stamp).astype(np.float64) / span
-            keep = 1.0 - ratio
-            one = data[older]
-            two = data[newer]
-            interpolated = np.empty((lanes.size, 7))
-            interpolated[:, :3] = keep[:, None] * one[:, :3] + ratio[:, None] * two[:, :3]
-            interpolated[:, 3:] = slerp_batch(one[:, 3:], two[:, 3:], ratio)
-            interpolated[equal] = two[equal]
-            values[lanes] = interpolated
-            parents[lanes] = parent_ids[older]
-            ok[lanes] = True
+            lane_times = times[lanes]
+            older = np.searchsorted(stamps, lane_times, side='right') - 1
+            same_parent = parent_ids[older] == parent_ids[older + 1]
+            single[lanes[~same_parent]] = older[~same_parent]
+            lanes = lanes[same_parent]
+            older = older[same_parent]
+            if lanes.size:
+                one_stamp = stamps[older]
+                ratio = (lane_times[same_parent] - one_stamp).astype(np.float64) / (
+                    stamps[older + 1] - one_stamp
+                ).astype(np.float64)
+                values[lanes] = _interpolate(data, older, ratio)
+                parents[lanes] = parent_ids[older]
+                single[lanes] = -2
     chosen = single >= 0
     values[chosen] = data[single[chosen]]
     parents[chosen] = parent_ids[single[chosen]]
-    ok[chosen] = True
-    return values, parents, ok
+    ok = single != -1
+    return values, parents, None if ok.all() else ok
 
 
 def batch_walk(
@@ -135,98 +151,120 @@ def batch_walk(
     count = times.shape[0]
     failed = np.zeros(count, dtype=bool)
     ending = np.zeros(count, dtype=np.int8)
-    src_t = np.zeros((count, 3))
-    src_q = np.zeros((count, 4))
-    src_q[:, 3] = 1.0
-    tgt_t = np.zeros((count, 3))
-    tgt_q = np.zeros((count, 4))
-    tgt_q[:, 3] = 1.0
     top = np.full(count, source_id, dtype=np.int64)
-    flagged = np.zeros(count, dtype=bool)
-
-    # Source side.
-    frame = np.full(count, source_id, dtype=np.int64)
-    active = np.ones(count, dtype=bool)
-    depth = 0
-    while active.any():
-        active_lanes = np.flatnonzero(active)
-        for frame_id in np.unique(frame[active_lanes]).tolist():
-            lanes = active_lanes[frame[active_lanes] == frame_id]
-            cache = caches[frame_id] if frame_id < len(caches) else None
-            if cache is None:
-                top[lanes] = frame_id
-                active[lanes] = False
-                continue
-            values, parents, ok = sample_batch(cache, times[lanes])
-            bad = lanes[~ok]
-            top[bad] = frame_id
-            flagged[bad] = True
-            active[bad] = False
-            lanes = lanes[ok]
-            if not lanes.size:
-                continue
-            values = values[ok]
-            if frame_id == target_id:
-                ending[lanes] = _ENDING_TARGET_PARENT
-                active[lanes] = False
-                continue
-            quats = values[:, 3:]
-            src_t[lanes] = rotate_vector_batch(quats, src_t[lanes]) + values[:, :3]
-            src_q[lanes] = quat_multiply_batch(quats, src_q[lanes])
-            top[lanes] = frame_id
-            frame[lanes] = parents[ok]
-        depth += 1
-        if depth > _MAX_GRAPH_DEPTH:
-            failed |= active
-            break
-
-    # Target side.
-    frame = np.full(count, target_id, dtype=np.int64)
-    active = (ending == _ENDING_NONE) & ~failed
-    depth = 0
-    while True:
-        active &= frame != top
-        if not active.any():
-            break
-        active_lanes = np.flatnonzero(active)
-        for frame_id in np.unique(frame[active_lanes]).tolist():
-            lanes = active_lanes[frame[active_lanes] == frame_id]
-            cache = caches[frame_id] if frame_id < len(caches) else None
-            if cache is None:
-                failed[lanes] = True  # stopped below the top: extrapolation or connectivity
-                active[lanes] = False
-                continue
-            values, parents, ok = sample_batch(cache, times[lanes])
-            failed[lanes[~ok]] = True
-            active[lanes[~ok]] = False
-            lanes = lanes[ok]
-            if not lanes.size:
-                continue
-            values = values[ok]
-            if frame_id == source_id:
-                ending[lanes] = _ENDING_SOURCE_PARENT
-                active[lanes] = False
-                continue
-            quats = values[:, 3:]
-            tgt_t[lanes] = rotate_vector_batch(quats, tgt_t[lanes]) + values[:, :3]
-            tgt_q[lanes] = quat_multiply_batch(quats, tgt_q[lanes])
-            frame[lanes] = parents[ok]
-        depth += 1
-        if depth > _MAX_GRAPH_DEPTH:
-            failed |= active
-            break
+    state = (top, failed, ending)
+    src_t, src_q = _side_walk(caches, times, source_id, target_id, state, source_side=True)
+    tgt_t, tgt_q = _side_walk(caches, times, target_id, source_id, state, source_side=False)
     full = (ending == _ENDING_NONE) & ~failed
     ending[full] = _ENDING_FULL
 
-    translations = src_t.copy()
-    rotations = src_q.copy()
     inverse_q = tgt_q * np.array([-1.0, -1.0, -1.0, 1.0])
     inverse_t = rotate_vector_batch(inverse_q, -tgt_t)
+    if full.all():
+        return (
+            rotate_vector_batch(inverse_q, src_t) + inverse_t,
+            quat_multiply_batch(inverse_q, src_q),
+            failed,
+        )
+    translations = src_t.copy()
+    rotations = src_q.copy()
     lanes = ending == _ENDING_SOURCE_PARENT
     translations[lanes] = inverse_t[lanes]
     rotations[lanes] = inverse_q[lanes]
-    lanes = ending == _ENDING_FULL
-    translations[lanes] = rotate_vector_batch(inverse_q[lanes], src_t[lanes]) + inverse_t[lanes]
-    rotations[lanes] = quat_multiply_batch(inverse_q[lanes], src_q[lanes])
+    translations[full] = rotate_vector_batch(inverse_q[full], src_t[full]) + inverse_t[full]
+    rotations[full] = quat_multiply_batch(inverse_q[full], src_q[full])
     failed |= ending == _ENDING_NONE
     return translations, rotations, failed
+
+
+def _side_walk(
+    caches: Sequence[TimeCache | StaticCache | None],
+    times: IntArray,
+    start_id: int,
+    other_id: int,
+    state: tuple[IntArray, BoolArray, npt.NDArray[np.int8]],
+    *,
+    source_side: bool,
+) -> tuple[FloatArray, FloatArray]:
+    """
+    Walk one side for every lane, accumulating ``top_T_start``; updates the shared state.
+
+    Source side: stops at a frame without cache or data (recording it as the lane's top), or
+    at ``other_id`` (target is an ancestor).  Target side: stops at the lane's top, at
+    ``other_id`` (source is an ancestor), or fails.
+    """
+    top, failed, ending = state
+    count = times.shape[0]
+    acc_t = np.zeros((count, 3))
+    acc_q = np.zeros((count, 4))
+    acc_q[:, 3] = 1.0
+    frame = np.full(count, start_id, dtype=np.int64)
+    active = np.ones(count, dtype=bool) if source_side else (ending == _ENDING_NONE) & ~failed
+    for _ in range(_MAX_GRAPH_DEPTH + 1):
+        if not source_side:
+            active &= frame != top
+        active_lanes = np.flatnonzero(active)
+        if not active_lanes.size:
+            return acc_t, acc_q
+        everyone = active_lanes.size == count
+        frames_here = frame if everyone else frame[active_lanes]
+        first_frame = int(frames_here[0])
+        if (frames_here == first_frame).all():
+            groups: list[tuple[int, IntArray | None]] = [
+                (first_frame, None if everyone else active_lanes)
+            ]
+        else:
+            groups = [
+                (frame_id, active_lanes[frames_here == frame_id])
+                for frame_id in np.unique(frames_here).tolist()
+            ]
+        for frame_id, group_lanes in groups:
+            lanes = group_lanes
+            cache = caches[frame_id] if frame_id < len(caches) else None
+            if cache is None:
+                if source_side:
+                    top[_all(lanes)] = frame_id
+                else:
+                    failed[_all(lanes)] = True  # below the top: extrapolation/connectivity
+                active[_all(lanes)] = False
+                continue
+            values, parents, ok = sample_batch(cache, times if lanes is None else times[lanes])
+            if ok is not None:
+                lanes_index = np.arange(count) if lanes is None else lanes
+                bad = lanes_index[~ok]
+                if source_side:
+                    top[bad] = frame_id
+                else:
+                    failed[bad] = True
+                active[bad] = False
+                lanes = lanes_index[ok]
+                if not lanes.size:
+                    continue
+                if values.shape[0] > 1:
+                    values = values[ok]
+                    parents = parents[ok]
+            if frame_id == other_id:
+                ending[_all(lanes)] = (
+                    _ENDING_TARGET_PARENT if source_side else _ENDING_SOURCE_PARENT
+                )
+                active[_all(lanes)] = False
+                continue
+            quats = values[:, 3:]
+            if lanes is None:
+                acc_t = rotate_vector_batch(quats, acc_t) + values[:, :3]
+                acc_q = quat_multiply_batch(quats, acc_q)
+                frame[:] = parents
+                if source_side:
+                    top[:] = frame_id
+            else:
+                acc_t[lanes] = rotate_vector_batch(quats, acc_t[lanes]) + values[:, :3]
+                acc_q[lanes] = quat_multiply_batch(quats, acc_q[lanes])
+                frame[lanes] = parents
+                if source_side:
+                    top[lanes] = frame_id
+    failed |= active  # deeper than tf2's MAX_GRAPH_DEPTH: the scalar walk reports the loop
+    return acc_t, acc_q
+
+
+def _all(lanes: IntArray | None) -> IntArray | slice:
+    return slice(None) if lanes is None else lanes
