@@ -17,6 +17,7 @@ A small DdsNode program the transport tests run as a separate process.
 
 ``pub``: publish TFMessages (one transform; child frame ``<frame>``, translation x = sequence
 number) from a timer, after ``--wait-subs`` subscriptions matched; then hold for ``--hold`` s.
+With ``--burst`` all messages are published at once and the process shuts down immediately.
 ``sub``: print ``msg <child> <x> <parent> <y> <z> <qx> <qy> <qz> <qw>`` per received transform
 and ``done <n>`` at the end (after ``--count`` transforms or ``--timeout`` s). Both print
 ``ready`` once set up.
@@ -51,6 +52,15 @@ def _say(text: str) -> None:
     sys.stdout.flush()
 
 
+def _message(frame: str, index: int) -> tf2_msgs.TFMessage:
+    transform = geometry_msgs.TransformStamped()
+    transform.header.frame_id = 'world'
+    transform.child_frame_id = frame
+    transform.transform.translation.x = float(index)
+    transform.transform.rotation.w = 1.0
+    return tf2_msgs.TFMessage(transforms=[transform])
+
+
 def _publish(node: dds_backend.DdsNode, args: argparse.Namespace) -> int:
     publisher = node.create_publisher(tf2_msgs.TFMessage, args.topic, _profile(args))
     deadline = time.monotonic() + args.timeout
@@ -61,17 +71,19 @@ def _publish(node: dds_backend.DdsNode, args: argparse.Namespace) -> int:
         time.sleep(0.01)
     _say('ready')
     sent = 0
+    if args.burst:
+        # Publish everything at once and shut down at once: only the shutdown flush can
+        # get the tail of the burst to the subscribers.
+        for index in range(args.count):
+            publisher.publish(_message(args.frame, index))
+        _say(f'sent {args.count}')
+        return 0
 
     def tick() -> None:
         nonlocal sent
         if sent >= args.count:
             return
-        transform = geometry_msgs.TransformStamped()
-        transform.header.frame_id = 'world'
-        transform.child_frame_id = args.frame
-        transform.transform.translation.x = float(sent)
-        transform.transform.rotation.w = 1.0
-        publisher.publish(tf2_msgs.TFMessage(transforms=[transform]))
+        publisher.publish(_message(args.frame, sent))
         sent += 1
 
     node.create_timer(1.0 / args.rate, tick)
@@ -125,6 +137,7 @@ def main() -> int:
     parser.add_argument('--durability', default='volatile')
     parser.add_argument('--wait-subs', type=int, default=0)
     parser.add_argument('--hold', type=float, default=0.0)
+    parser.add_argument('--burst', action='store_true')
     parser.add_argument('--timeout', type=float, default=20.0)
     args = parser.parse_args()
     dds_backend.init()

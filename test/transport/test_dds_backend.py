@@ -259,3 +259,46 @@ def test_two_argument_callbacks_get_message_info_with_the_publisher_gid(world):
     for info in infos:
         assert before <= info['source_timestamp'] <= info['received_timestamp']
         assert set(info) >= {'publication_sequence_number', 'reception_sequence_number'}
+
+
+@pytest.mark.dds
+def test_ros_discovery_info_follows_entity_and_node_changes(world):
+    """ros_discovery_info is republished when a publisher or a node goes away."""
+    from tf_demo.msgs import cdr
+    from tf_demo.msgs import rmw_dds_common
+    from tf_demo.transport import dds_wire
+
+    participant = dds_wire.get_participant()
+    reader = participant.create_reader(
+        dds_wire.DISCOVERY_INFO_TOPIC,
+        dds_wire.DISCOVERY_INFO_TYPE,
+        dds_wire.EndpointQos(reliable=True, transient_local=True, keep_all=True),
+        b'',
+    )
+    latest: list[rmw_dds_common.ParticipantEntitiesInfo] = []
+
+    def nodes_now() -> dict[str, tuple[int, int]]:
+        deadline = time.monotonic() + 5
+        while time.monotonic() < deadline:
+            payloads = reader.take()
+            if payloads:
+                latest.append(
+                    cdr.deserialize(rmw_dds_common.ParticipantEntitiesInfo, payloads[-1])
+                )
+                break
+            time.sleep(0.01)
+        return {
+            n.node_name: (len(n.reader_gid_seq), len(n.writer_gid_seq))
+            for n in latest[-1].node_entities_info_seq
+        }
+
+    keeper = dds_backend.DdsNode('keeper')
+    node = dds_backend.DdsNode('changing')
+    publisher = node.create_publisher(std_msgs.String, 'chatter', 10)
+    assert nodes_now() == {'keeper': (0, 0), 'changing': (0, 1)}
+    assert bytes(latest[-1].gid.data) == participant.guid
+    node.destroy_publisher(publisher)
+    assert nodes_now() == {'keeper': (0, 0), 'changing': (0, 0)}
+    node.destroy_node()
+    assert nodes_now() == {'keeper': (0, 0)}
+    del keeper

@@ -125,6 +125,21 @@ def test_reliable_delivery_at_1khz_loses_nothing(dds_env, peers):
     assert received_x(subscriber) == [float(i) for i in range(count)]
 
 
+def test_shutdown_right_after_a_burst_still_delivers_it(dds_env, peers):
+    """A publisher that shuts down right after publishing 500 messages gets all of them out."""
+    count = 500
+    subscriber = start(
+        peers, dds_env, 'sub', '--count', str(count), '--keep-all', '--timeout', '30'
+    )
+    subscriber.wait_for_line('ready')
+    publisher = start(
+        peers, dds_env, 'pub', '--count', str(count), '--burst', '--keep-all', '--wait-subs', '1'
+    )
+    assert publisher.finish() == 0
+    assert subscriber.finish() == 0
+    assert received_x(subscriber) == [float(i) for i in range(count)]
+
+
 def test_transient_local_late_joiner_gets_latched_message(dds_env, peers):
     """A TRANSIENT_LOCAL subscription started after the publish still receives the message."""
     publisher = start(
