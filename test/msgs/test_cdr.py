@@ -1,0 +1,317 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""The CDR codec: round trips, big-endian input, and clear errors for every kind of bad input."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from struct import pack
+from typing import Any
+
+from hypothesis import given
+from hypothesis import settings
+from hypothesis import strategies as st
+from msgs_strategies import message_strategy
+import pytest
+from tf_demo.msgs import cdr
+from tf_demo.msgs._reference import reference_deserialize
+from tf_demo.msgs._reference import reference_serialize
+from tf_demo.msgs._schema import DEFINITIONS
+from tf_demo.msgs.builtin_interfaces import Time
+from tf_demo.msgs.geometry_msgs import Point32
+from tf_demo.msgs.geometry_msgs import Vector3
+from tf_demo.msgs.rmw_dds_common import Gid
+from tf_demo.msgs.rmw_dds_common import NodeEntitiesInfo
+from tf_demo.msgs.rmw_dds_common import ParticipantEntitiesInfo
+from tf_demo.msgs.rosgraph_msgs import Clock
+from tf_demo.msgs.sensor_msgs import JointState
+from tf_demo.msgs.std_msgs import String
+from tf_demo.msgs.tf2_msgs import TFMessage
+
+GOLDEN = Path(__file__).resolve().parent.parent / 'data' / 'golden'
+GOLDEN_FILES = sorted(GOLDEN.glob('*.cdr'))
+TYPE_OF_GOLDEN = {
+    path.name: '/msg/'.join(path.stem.split('__')[:2]) for path in GOLDEN_FILES
+}  # e.g. tf2_msgs__TFMessage__one.cdr -> tf2_msgs/msg/TFMessage
+
+
+@pytest.mark.property
+@pytest.mark.parametrize('msgtype', sorted(DEFINITIONS))
+@settings(max_examples=40, deadline=None)
+@given(data=st.data())
+def test_every_type_round_trips_and_matches_the_reference_codec(msgtype: str, data: Any) -> None:
+    """For any valid message, encode/decode round-trips and agrees with the reference codec."""
+    message = data.draw(message_strategy(msgtype))
+    encoded = cdr.serialize(message)
+    assert encoded[:4] == b'\x00\x01\x00\x00'
+    assert encoded == reference_serialize(msgtype, message)
+    decoded = cdr.deserialize(type(message), encoded)
+    assert decoded == message
+    assert reference_deserialize(msgtype, encoded) == message
+    assert cdr.deserialize(msgtype, memoryview(encoded + b'\x00\x00\x00')) == message
+
+
+def test_point32_is_float32_on_the_wire() -> None:
+    """Point32 fields are 4-byte floats: values round to float32."""
+    encoded = cdr.serialize(Point32(x=0.1, y=-2.0, z=1e-3))
+    assert encoded == b'\x00\x01\x00\x00' + pack('<3f', 0.1, -2.0, 1e-3)
+    decoded = cdr.deserialize(Point32, encoded)
+    assert decoded.x == pytest.approx(0.1, rel=1e-7)
+    assert decoded.x != 0.1
+
+
+def test_participant_entities_info_layout() -> None:
+    """ros_discovery_info's message: 16 raw gid bytes, bounded strings, gid sequences."""
+    gid = bytes(range(1, 17))
+    info = ParticipantEntitiesInfo(
+        gid=Gid(data=gid),
+        node_entities_info_seq=[
+            NodeEntitiesInfo(
+                node_namespace='/',
+                node_name='talker',
+                writer_gid_seq=[Gid(data=bytes(range(16, 32)))],
+            )
+        ],
+    )
+    expected = b''.join(
+        [
+            b'\x00\x01\x00\x00',  # CDR_LE
+            gid,  # off 0: gid.data (uint8[16], no length)
+            pack('<I', 1),  # off 16: node_entities_info_seq length 1
+            pack('<I', 2) + b'/\x00',  # off 20: node_namespace '/'
+            b'\x00\x00',  # off 26: padding to 4
+            pack('<I', 7) + b'talker\x00',  # off 28: node_name 'talker'
+            b'\x00',  # off 39: padding to 4
+            pack('<I', 0),  # off 40: reader_gid_seq length 0
+            pack('<I', 1),  # off 44: writer_gid_seq length 1
+            bytes(range(16, 32)),  # off 48: writer_gid_seq[0].data
+        ]
+    )
+    assert cdr.serialize(info) == expected
+    decoded = cdr.deserialize(ParticipantEntitiesInfo, expected)
+    assert bytes(decoded.gid.data) == gid
+    assert decoded.node_entities_info_seq[0].node_name == 'talker'
+
+
+def test_big_endian_input_is_accepted() -> None:
+    """CDR_BE (header 00 00) decodes to the same message, including arrays and the tf path."""
+    big_endian = b''.join(
+        [
+            b'\x00\x00\x00\x00',  # CDR_BE
+            pack('>I', 1),  # transforms: length 1
+            pack('>iI', 1, 2),  # header.stamp = 1 s 2 ns
+            pack('>I', 10) + b'base_link\x00' + b'\x00\x00',  # frame_id + padding
+            pack('>I', 12) + b'camera_link\x00',  # child_frame_id
+            b'\x00\x00\x00\x00',  # padding to 8
+            pack('>7d', 0.5, 0.0, 0.2, 0.0, 0.0, 0.0, 1.0),  # translation, rotation
+        ]
+    )
+    little_endian = (GOLDEN / 'tf2_msgs__TFMessage__one.cdr').read_bytes()
+    assert cdr.deserialize(TFMessage, big_endian) == cdr.deserialize(TFMessage, little_endian)
+    assert cdr.decode_tf_message_transforms(big_endian) == cdr.decode_tf_message_transforms(
+        little_endian
+    )
+    joint_state = b''.join(
+        [
+            b'\x00\x00\x00\x00',  # CDR_BE
+            pack('>iI', 3, 4) + pack('>I', 1) + b'\x00',  # header: stamp, frame_id ''
+            b'\x00\x00\x00',  # padding to 4
+            pack('>I', 0),  # name: empty
+            pack('>I', 2) + pack('>2d', 1.5, -2.5),  # position (already 8-aligned at off 16)
+            pack('>I', 0) + pack('>I', 0),  # velocity, effort: empty
+        ]
+    )
+    decoded = cdr.deserialize(JointState, joint_state)
+    assert list(decoded.position) == [1.5, -2.5]
+    assert decoded.header.stamp.nanosec == 4
+
+
+@pytest.mark.parametrize(
+    ('header', 'match'),
+    [
+        (b'\x00\x07\x00\x00', 'encapsulation header 00 07 is not plain CDR'),
+        (b'\x00\x03\x00\x00', 'encapsulation header 00 03 is not plain CDR'),
+        (b'\x01\x01\x00\x00', 'encapsulation header 01 01 is not plain CDR'),
+    ],
+)
+def test_other_encapsulations_are_rejected(header: bytes, match: str) -> None:
+    """XCDR2, PL_CDR and garbage headers raise CdrError naming the header."""
+    body = (GOLDEN / 'rosgraph_msgs__Clock.cdr').read_bytes()[4:]
+    with pytest.raises(cdr.CdrError, match=f'rosgraph_msgs/msg/Clock: {match}'):
+        cdr.deserialize(Clock, header + body)
+
+
+def test_short_input_is_rejected() -> None:
+    """Fewer bytes than the header is a CdrError, not an IndexError."""
+    with pytest.raises(cdr.CdrError, match='shorter than the CDR header'):
+        cdr.deserialize(Clock, b'\x00\x01')
+    with pytest.raises(cdr.CdrError, match='shorter than the CDR header'):
+        cdr.decode_tf_message_transforms(b'')
+
+
+MALFORMED_STRINGS = {
+    'no NUL': (pack('<I', 3) + b'ab!', r'field data at byte 10: string does not end with NUL'),
+    'length 0': (pack('<I', 0), r'field data at byte 8: string length 0'),
+    'absurd length': (
+        pack('<I', 2**32 - 1) + b'ab\x00',
+        r'field data at byte 8: string of length 4294967295',
+    ),
+    'bad UTF-8': (
+        pack('<I', 3) + b'\xff\xfe\x00',
+        r'field data at byte 8: string is not valid UTF-8',
+    ),
+    'truncated length': (pack('<H', 3), r'field data at byte 4: uint32 needs 4 bytes but only 2'),
+}
+
+
+@pytest.mark.parametrize(('body', 'match'), MALFORMED_STRINGS.values(), ids=MALFORMED_STRINGS)
+def test_malformed_strings_name_the_field_and_byte(body: bytes, match: str) -> None:
+    """Missing NUL, zero or absurd length, bad UTF-8 and truncation each get a precise error."""
+    with pytest.raises(cdr.CdrError, match=r'cannot decode std_msgs/msg/String: ' + match):
+        cdr.deserialize(String, b'\x00\x01\x00\x00' + body)
+
+
+def test_absurd_sequence_length_is_bounded_by_the_remaining_bytes() -> None:
+    """A huge element count fails at once, naming the sequence, without allocating."""
+    data = b'\x00\x01\x00\x00' + pack('<I', 2**31) + bytes(100)
+    with pytest.raises(
+        cdr.CdrError, match='TFMessage: field transforms at byte 8: sequence length'
+    ):
+        cdr.deserialize(TFMessage, data)
+    with pytest.raises(cdr.CdrError, match='field transforms at byte 8: sequence length'):
+        cdr.decode_tf_message_transforms(data)
+    joint_state = bytearray((GOLDEN / 'sensor_msgs__JointState.cdr').read_bytes())
+    joint_state[64:68] = pack('<I', 10**6)  # position's count
+    with pytest.raises(
+        cdr.CdrError, match='JointState: field position at byte 68: sequence length'
+    ):
+        cdr.deserialize(JointState, bytes(joint_state))
+
+
+def test_error_in_a_nested_element_names_its_path() -> None:
+    """A broken string deep in a sequence is reported by its full field path."""
+    data = bytearray((GOLDEN / 'tf2_msgs__TFMessage__three.cdr').read_bytes())
+    data[235] = 0xFF  # inside transforms[2].child_frame_id
+    with pytest.raises(cdr.CdrError, match=r'field transforms\[2\]\.child_frame_id at byte 2'):
+        cdr.deserialize(TFMessage, bytes(data))
+    with pytest.raises(cdr.CdrError, match=r'transforms\[2\]\.child_frame_id.*not valid UTF-8'):
+        cdr.decode_tf_message_transforms(bytes(data))
+
+
+def _decode_or_error(msgtype: str, data: bytes, *, tf_fast_path: bool = False) -> Any:
+    """Return the decoded message (or tf tuples), or the CdrError raised."""
+    try:
+        if tf_fast_path:
+            return cdr.decode_tf_message_transforms(data)
+        return cdr.deserialize(msgtype, data)
+    except cdr.CdrError as error:
+        return error
+
+
+@pytest.mark.parametrize('path', GOLDEN_FILES, ids=lambda path: path.stem)
+def test_every_truncation_of_every_golden_raises_cdr_error_or_decodes(path: Path) -> None:
+    """Cutting a golden message anywhere gives CdrError (or a valid prefix), nothing else."""
+    data = path.read_bytes()
+    msgtype = TYPE_OF_GOLDEN[path.name]
+    full = cdr.deserialize(msgtype, data)
+    for end in range(len(data)):
+        outcome = _decode_or_error(msgtype, data[:end])
+        if isinstance(outcome, cdr.CdrError):
+            assert msgtype in str(outcome)
+        else:
+            assert outcome != full  # only a shorter valid message could decode from a prefix
+        if msgtype == 'tf2_msgs/msg/TFMessage':
+            with pytest.raises(cdr.CdrError):
+                cdr.decode_tf_message_transforms(data[:end])
+
+
+@pytest.mark.property
+@pytest.mark.parametrize('msgtype', sorted(DEFINITIONS))
+@settings(max_examples=150, deadline=None)
+@given(body=st.binary(max_size=120), big_endian=st.booleans())
+def test_random_bytes_raise_cdr_error_or_decode(
+    msgtype: str, body: bytes, big_endian: bool
+) -> None:
+    """Garbage after a valid header decodes or raises CdrError; the fast and slow paths agree."""
+    data = (b'\x00\x00\x00\x00' if big_endian else b'\x00\x01\x00\x00') + body
+    outcome = _decode_or_error(msgtype, data)
+    if isinstance(outcome, cdr.CdrError):
+        assert str(outcome).startswith(f'cannot decode {msgtype}')
+        with pytest.raises(cdr.CdrError):
+            reference_deserialize(msgtype, data)
+    else:
+        assert repr(outcome) == repr(reference_deserialize(msgtype, data))  # NaN-safe
+    if msgtype == 'tf2_msgs/msg/TFMessage':
+        fast = _decode_or_error(msgtype, data, tf_fast_path=True)
+        assert isinstance(fast, cdr.CdrError) == isinstance(outcome, cdr.CdrError)
+
+
+@pytest.mark.property
+@settings(max_examples=200, deadline=None)
+@given(data=st.data())
+def test_mutated_golden_bytes_raise_cdr_error_or_decode(data: Any) -> None:
+    """Flipping bytes of real messages never raises anything but CdrError."""
+    path = data.draw(st.sampled_from(GOLDEN_FILES))
+    raw = bytearray(path.read_bytes())
+    for _ in range(data.draw(st.integers(1, 4))):
+        index = data.draw(st.integers(4, len(raw) - 1))
+        raw[index] = data.draw(st.integers(0, 255))
+    msgtype = TYPE_OF_GOLDEN[path.name]
+    try:
+        decoded = cdr.deserialize(msgtype, bytes(raw))
+    except cdr.CdrError:
+        return
+    assert repr(decoded) == repr(reference_deserialize(msgtype, bytes(raw)))  # NaN-safe
+
+
+@pytest.mark.parametrize(
+    ('message', 'match'),
+    [
+        (Clock(clock=Vector3()), r'Clock: field clock\.sec: Vector3 object has no field'),
+        (String(data=b'bytes'), r'String: field data: expected str'),
+        (Vector3(x='1.0'), r'Vector3: field x: expected float64'),
+        (Point32(x=1e39), r'Point32: field x: 1e\+39 is out of the float32 range'),
+        (Gid(data=bytes(15)), r'Gid: field data: expected exactly 16 elements, got 15'),
+        (JointState(name=['a', 3]), r'JointState: field name\[1\]: expected str'),
+        (Clock(clock=Time(sec=2**31)), r'Clock: field clock\.sec: 2147483648 is out of the int32'),
+        (String(data='\ud800'), r'String: field data: string cannot be encoded as UTF-8'),
+    ],
+)  # fmt: skip
+def test_unencodable_values_raise_cdr_error_naming_the_field(message: Any, match: str) -> None:
+    """Wrong types, ranges and lengths are reported with the field's path."""
+    with pytest.raises(cdr.CdrError, match=r'cannot encode [a-z_]+/msg/' + match):
+        cdr.serialize(message)
+
+
+class _RclpyStyleVector3:
+    """Stand-in with the module layout of an rclpy message class (geometry_msgs.msg._vector3)."""
+
+    __module__ = 'geometry_msgs.msg._vector3'
+
+    def __init__(self) -> None:
+        self.x, self.y, self.z = 1.0, 2.0, 3.0
+
+
+_RclpyStyleVector3.__name__ = 'Vector3'
+
+
+def test_rclpy_style_objects_are_encoded_by_field_names() -> None:
+    """Objects shaped like rclpy messages serialise by their class's ROS name and fields."""
+    assert cdr.msgtype_of(_RclpyStyleVector3) == 'geometry_msgs/msg/Vector3'
+    assert cdr.serialize(_RclpyStyleVector3()) == cdr.serialize(Vector3(x=1.0, y=2.0, z=3.0))
+    decoded = cdr.deserialize(_RclpyStyleVector3, cdr.serialize(_RclpyStyleVector3()))
+    assert decoded == Vector3(x=1.0, y=2.0, z=3.0)
+    with pytest.raises(cdr.CdrError, match='is not a ROS message type'):
+        cdr.serialize(object())
