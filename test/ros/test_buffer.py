@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import copy
 import threading
+from typing import Any
 
 import pytest
 from tf_demo.core.exceptions import ExtrapolationException
@@ -109,7 +110,9 @@ def test_bad_time_type_raises_tf2_py_type_error() -> None:
 def test_can_transform_debug_tuple_and_core_names() -> None:
     """can_transform(return_debug_tuple=True) and can_transform_core give (bool, text)."""
     buffer = Buffer()
-    ok, text = buffer.can_transform('a', 'b', 0, return_debug_tuple=True)
+    answer = buffer.can_transform('a', 'b', 0, return_debug_tuple=True)
+    assert isinstance(answer, tuple)
+    ok, text = answer
     assert ok is False
     assert text == (
         'Invalid frame ID "a" passed to canTransform argument target_frame - frame does not exist'
@@ -274,9 +277,9 @@ def upstream_buffer() -> Buffer:
     return buffer
 
 
-def stamped(msg: object, frame: str = 'a') -> object:
-    msg.header.frame_id = frame  # type: ignore[attr-defined]
-    msg.header.stamp.sec = 2  # type: ignore[attr-defined]
+def stamped(msg: Any, frame: str = 'a') -> Any:
+    msg.header.frame_id = frame
+    msg.header.stamp.sec = 2
     return msg
 
 

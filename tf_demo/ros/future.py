@@ -26,6 +26,7 @@ from collections.abc import Callable
 from collections.abc import Generator
 import threading
 from typing import Any
+from typing import cast
 from typing import Generic
 from typing import TypeVar
 
@@ -61,7 +62,7 @@ class Future(Generic[T]):
         """Cancel the future if it is still pending; waiters then stop waiting for it."""
         self._complete(cancelled=True)
 
-    def result(self) -> T | None:
+    def result(self) -> T:
         """
         Return the result, or raise the exception that was set.
 
@@ -69,7 +70,7 @@ class Future(Generic[T]):
         """
         if self._exception is not None:
             raise self._exception
-        return self._result
+        return cast('T', self._result)
 
     def exception(self) -> BaseException | None:
         """Return the exception that was set, if any."""
@@ -99,7 +100,7 @@ class Future(Generic[T]):
         """
         return self._event.wait(timeout_sec)
 
-    def __await__(self) -> Generator[None, None, T | None]:
+    def __await__(self) -> Generator[None, None, T]:
         """Yield to the executor until done, then return the result (or raise)."""
         while not self._event.is_set():
             yield None

@@ -152,7 +152,7 @@ def _rotation_matrix_unnormalised(transform: Any) -> FloatArray:
     )
 
 
-def transform_covariance(covariance: Sequence[float], transform: Any) -> list[float]:
+def transform_covariance(covariance: npt.ArrayLike, transform: Any) -> list[float]:
     """
     Rotate a row-major 6x6 pose covariance: each 3x3 block ``C`` becomes ``R @ C @ R.T``.
 

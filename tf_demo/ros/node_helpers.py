@@ -30,6 +30,20 @@ from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.transport.backend import NodeConfigError
 
+__all__ = [
+    'NodeConfigError',
+    'Quat',
+    'Vec3',
+    'as_float',
+    'as_frame',
+    'as_positive_float',
+    'as_vector3',
+    'declare_flexible',
+    'make_transform_stamped',
+    'now_ns',
+    'rotation_from_values',
+]
+
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
 

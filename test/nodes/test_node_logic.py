@@ -1,0 +1,186 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Pure logic of the tutorial nodes: config parsing, the circle, formatters, launch files."""
+
+from __future__ import annotations
+
+import ast
+import math
+from pathlib import Path
+
+import pytest
+from tf_demo.msgs import geometry_msgs
+from tf_demo.msgs import nav_msgs
+from tf_demo.nodes.dynamic_tf_pub import circle_transform
+from tf_demo.nodes.odom_tf_broadcaster import transform_from_odometry
+from tf_demo.nodes.point_transformer import format_point
+from tf_demo.nodes.static_tf_pub import format_published
+from tf_demo.nodes.static_tf_pub import load_specs_file
+from tf_demo.nodes.static_tf_pub import spec_from_values
+from tf_demo.nodes.static_tf_pub import specs_from_yaml
+from tf_demo.nodes.static_tf_pub import StaticTransformSpec
+from tf_demo.nodes.tf_listener import format_failure
+from tf_demo.nodes.tf_listener import format_translation
+from tf_demo.ros.node_helpers import make_transform_stamped
+from tf_demo.ros.node_helpers import NodeConfigError
+import yaml
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def test_rep105_example_file_parses_to_three_static_transforms() -> None:
+    """config/rep105_static_transforms.yaml: base_footprint->base_link->{lidar,camera}."""
+    specs = load_specs_file(str(REPO / 'config' / 'rep105_static_transforms.yaml'))
+    assert [(s.parent, s.child) for s in specs] == [
+        ('base_footprint', 'base_link'),
+        ('base_link', 'lidar_link'),
+        ('base_link', 'camera_link'),
+    ]
+    assert specs[2].translation == (0.5, 0.0, 0.2)
+    assert specs[2].rotation == (0.0, 0.0, 0.0, 1.0)
+
+
+def test_rotation_accepts_rpy_and_normalises_quaternions() -> None:
+    """Three numbers are roll/pitch/yaw (tf2 setRPY); four are a quaternion, normalised."""
+    rpy = spec_from_values('a', 'b', [0, 0, 0], [0.1, 0.2, 0.3])
+    assert rpy.rotation == pytest.approx((0.034270799, 0.106020511, 0.143572175, 0.983347443))
+    quat = spec_from_values('a', 'b', [0, 0, 0], [0.0, 0.0, 2.0, 2.0])
+    assert quat.rotation == pytest.approx((0.0, 0.0, math.sqrt(0.5), math.sqrt(0.5)))
+
+
+@pytest.mark.parametrize(
+    ('text', 'message'),
+    [
+        ('transforms: [', r'<f>: line \d+ is not valid YAML'),
+        ('frames: []', "<f>: expected a mapping with a 'transforms' list"),
+        ('transforms: []', '<f>: the transforms list is empty'),
+        (
+            'transforms: [{parent: a, translation: [0, 0, 0]}]',
+            r"transforms\[0\] is missing 'child'",
+        ),
+        (
+            'transforms: [{parent: a, child: b, translation: [0, 0]}]',
+            r'transforms\[0\] translation must be 3 numbers \[x, y, z\], got \[0, 0\]',
+        ),
+        (
+            'transforms: [{parent: a, child: b, translation: [0, 0, 0], rotation: [1, 2]}]',
+            r'transforms\[0\] rotation must be 3 numbers \[roll, pitch, yaw\] or 4',
+        ),
+        (
+            'transforms: [{parent: a, child: b, translation: [0, 0, 0], rotation: [0, 0, 0, 0]}]',
+            'quaternion .* must not be zero',
+        ),
+        ('transforms: [{parent: /a, child: b, translation: [0, 0, 0]}]', "cannot start with '/'"),
+        ('transforms: [{parent: a, child: a, translation: [0, 0, 0]}]', "both 'a'"),
+        (
+            'transforms: [{parent: a, child: b, translation: [0, 0, 0]},'
+            ' {parent: a, child: b, translation: [1, 0, 0]}]',
+            r"transforms\[1\]: child frame 'b' appears twice",
+        ),
+        (
+            'transforms: [{parent: a, child: b, translation: [0, 0, 0], scale: 2}]',
+            r'transforms\[0\] has unknown key\(s\) scale',
+        ),
+        ('transforms: [{parent: a, child: b, translation: [.nan, 0, 0]}]', 'finite'),
+    ],
+)
+def test_bad_transform_files_give_one_line_errors(text: str, message: str) -> None:
+    """Every invalid file is refused with one line naming the file, entry and field."""
+    with pytest.raises(NodeConfigError, match=message.replace('<f>', 'f.yaml')) as info:
+        specs_from_yaml(text, 'f.yaml')
+    assert '\n' not in str(info.value)
+
+
+def test_format_published_lists_every_transform() -> None:
+    """The start-up log line lists parent -> child with translation and rotation."""
+    text = format_published([StaticTransformSpec('a', 'b', (0.5, 0.0, 0.2), (0, 0, 0, 1.0))])
+    assert text == (
+        'Publishing 1 static transform(s) on /tf_static:\n'
+        '  a -> b: translation (0.5, 0, 0.2), rotation (0, 0, 0, 1)'
+    )
+
+
+def test_circle_transform_matches_the_course_formula() -> None:
+    """x = r cos t, y = r sin t, rotation (0, 0, sin(t/2), cos(t/2)) with t the stamp in s."""
+    translation, rotation = circle_transform(2.0, 1_500_000_000)
+    assert translation == (2.0 * math.cos(1.5), 2.0 * math.sin(1.5), 0.0)
+    assert rotation == (0.0, 0.0, math.sin(0.75), math.cos(0.75))
+
+
+def test_listener_formatters() -> None:
+    """The listener logs the translation, or the course's warning with the reason."""
+    t = make_transform_stamped(
+        'odom', 'camera_link', 1_250_000_000, (1.0, -2.0, 0.25), (0, 0, 0, 1)
+    )
+    assert format_translation('odom', 'camera_link', t) == (
+        'Transform odom <- camera_link at 1.250000: translation x=1.000, y=-2.000, z=0.250'
+    )
+    assert format_failure('odom', 'camera_link', 'no frame') == (
+        'Could not transform odom to camera_link: no frame'
+    )
+
+
+def test_point_formatter() -> None:
+    """The point transformer logs the point in both frames."""
+    a = geometry_msgs.PointStamped()
+    a.point.x = 1.0
+    b = geometry_msgs.PointStamped()
+    b.point.x, b.point.y = 2.0, 3.5
+    assert format_point('base_link', 'map', a, b) == (
+        'Point (1.000, 0.000, 0.000) in base_link is (2.000, 3.500, 0.000) in map'
+    )
+
+
+def test_odometry_becomes_a_transform_with_its_own_stamp_and_frames() -> None:
+    """Stamp, frames, position and orientation are copied; empty frames use the defaults."""
+    odom = nav_msgs.Odometry()
+    odom.header.stamp.sec, odom.header.stamp.nanosec = 12, 345
+    odom.header.frame_id = 'odom'
+    odom.child_frame_id = 'base_footprint'
+    odom.pose.pose.position.x, odom.pose.pose.position.y = 1.0, 2.0
+    q = odom.pose.pose.orientation
+    q.z, q.w = math.sqrt(0.5), math.sqrt(0.5)
+    t = transform_from_odometry(odom, geometry_msgs.TransformStamped, 'o', 'b')
+    assert (t.header.stamp.sec, t.header.stamp.nanosec) == (12, 345)
+    assert (t.header.frame_id, t.child_frame_id) == ('odom', 'base_footprint')
+    assert (t.transform.translation.x, t.transform.translation.y) == (1.0, 2.0)
+    assert t.transform.rotation.z == math.sqrt(0.5)
+    odom.header.frame_id = odom.child_frame_id = ''
+    t = transform_from_odometry(odom, geometry_msgs.TransformStamped, 'o', 'b')
+    assert (t.header.frame_id, t.child_frame_id) == ('o', 'b')
+
+
+@pytest.mark.parametrize('name', ['tf_demo.launch.py', 'rep105.launch.py'])
+def test_launch_files_parse_and_define_generate_launch_description(name: str) -> None:
+    """The launch files are valid Python with generate_launch_description() (run inside ROS)."""
+    tree = ast.parse((REPO / 'launch' / name).read_text(encoding='utf-8'))
+    functions = {n.name for n in tree.body if isinstance(n, ast.FunctionDef)}
+    assert 'generate_launch_description' in functions
+    executables = {
+        kw.value.value
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call)
+        for kw in node.keywords
+        if kw.arg == 'executable' and isinstance(kw.value, ast.Constant)
+    }
+    assert {'static_tf_pub', 'dynamic_tf_pub', 'rviz2'} <= executables
+
+
+def test_rviz_config_shows_tf_with_fixed_frame_odom() -> None:
+    """config/tf_demo.rviz: a TF display and the fixed frame odom."""
+    config = yaml.safe_load((REPO / 'config' / 'tf_demo.rviz').read_text(encoding='utf-8'))
+    manager = config['Visualization Manager']
+    assert manager['Global Options']['Fixed Frame'] == 'odom'
+    assert 'rviz_default_plugins/TF' in [d['Class'] for d in manager['Displays']]

@@ -1,0 +1,94 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+``dynamic_tf_pub``: odom -> base_link moving on a circle, published on ``/tf`` at 20 Hz.
+
+With ``t`` the seconds of the stamp used: x = r·cos(t), y = r·sin(t), z = 0 and rotation
+(0, 0, sin(t/2), cos(t/2)) (a yaw of ``t``). Parameters: ``radius`` (1.0), ``rate`` (20.0 Hz),
+``parent_frame`` (``odom``), ``child_frame`` (``base_link``).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+
+from tf_demo.ros.node_helpers import as_float
+from tf_demo.ros.node_helpers import as_frame
+from tf_demo.ros.node_helpers import as_positive_float
+from tf_demo.ros.node_helpers import declare_flexible
+from tf_demo.ros.node_helpers import make_transform_stamped
+from tf_demo.ros.node_helpers import NodeConfigError
+from tf_demo.ros.node_helpers import now_ns
+from tf_demo.ros.node_helpers import Quat
+from tf_demo.ros.node_helpers import Vec3
+from tf_demo.ros.transform_broadcaster import TransformBroadcaster
+from tf_demo.transport import Node
+from tf_demo.transport import run_node
+
+NODE_NAME = 'dynamic_tf_pub'
+
+
+def circle_transform(radius: float, stamp_ns: int) -> tuple[Vec3, Quat]:
+    """Return odom_T_base_link at a stamp: position on the circle and yaw ``t``."""
+    t = stamp_ns / 1e9
+    return (
+        (radius * math.cos(t), radius * math.sin(t), 0.0),
+        (0.0, 0.0, math.sin(t / 2.0), math.cos(t / 2.0)),
+    )
+
+
+class DynamicTfPublisher(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+    """Publishes the moving odom -> base_link transform on a timer."""
+
+    def __init__(self) -> None:
+        """Read the parameters and start the timer."""
+        super().__init__(NODE_NAME)
+        self.radius = as_float('radius', declare_flexible(self, 'radius', 1.0))
+        self.rate = as_positive_float('rate', declare_flexible(self, 'rate', 20.0))
+        self.parent_frame = as_frame(
+            'parent_frame', declare_flexible(self, 'parent_frame', 'odom')
+        )
+        self.child_frame = as_frame(
+            'child_frame', declare_flexible(self, 'child_frame', 'base_link')
+        )
+        if self.parent_frame == self.child_frame:
+            msg = f'parent_frame and child_frame are both {self.parent_frame!r}'
+            raise NodeConfigError(msg)
+        self.broadcaster = TransformBroadcaster(self)
+        self.timer = self.create_timer(1.0 / self.rate, self.publish_once)
+        self.get_logger().info(
+            f'Publishing {self.parent_frame} -> {self.child_frame} on a circle of radius '
+            f'{self.radius:g} m at {self.rate:g} Hz'
+        )
+
+    def publish_once(self) -> None:
+        """Publish the transform for the current time."""
+        stamp_ns = now_ns(self)
+        translation, rotation = circle_transform(self.radius, stamp_ns)
+        self.broadcaster.send_transform(
+            make_transform_stamped(
+                self.parent_frame, self.child_frame, stamp_ns, translation, rotation
+            )
+        )
+
+
+def main(args: list[str] | None = None) -> int:
+    """Run the node until Ctrl-C; exit 1 with a one-line error on bad parameters."""
+    return run_node(DynamicTfPublisher, args)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
