@@ -228,3 +228,24 @@ def test_quaternion_sign_follows_kdl_matrix_conversion(q_xyzw: tuple[float, ...]
         diagonal = [m[0][0], m[1][1], m[2][2]]
         assert result[diagonal.index(max(diagonal))] > 0
     assert abs(sum(a * b for a, b in zip(result, (x, y, z, w), strict=True))) == pytest.approx(1.0)
+
+
+def test_root_link_inertia_gets_kdl_warning() -> None:
+    """A root link with <inertial> keeps working but carries kdl_parser's warning."""
+    xml = (
+        '<robot name="r"><link name="base"><inertial><mass value="1"/></inertial></link>'
+        '<link name="a"/><joint name="j" type="fixed"><parent link="base"/><child link="a"/>'
+        '</joint></robot>'
+    )
+    model = RobotModel.from_string(xml)
+    assert model.warnings == [
+        'The root link base has an inertia specified in the URDF, but KDL does not support a '
+        'root link with an inertia.  As a workaround, you can add an extra dummy link to your '
+        'URDF.'
+    ]
+    assert (
+        RobotModel.from_string(
+            xml.replace('base"><inertial>', 'base"><visual>').replace('</inertial>', '</visual>')
+        ).warnings
+        == []
+    )

@@ -481,3 +481,16 @@ def test_jsp_takes_the_description_from_the_topic_and_merges_sources(
     wait_until(lambda: list(states[-1].position) == [1.25], what='the source value republished')
     assert list(states[-1].name) == ['frame_1_to_frame_2']
     assert rsp.process.poll() is None
+
+
+def test_positional_urdf_file_fallback_of_upstream(spawn: Any) -> None:
+    """A non-ROS argument is taken as the URDF file (with upstream's warning); a missing one
+    is a one-line error naming it."""
+    ok = Running(spawn.start('robot_state_publisher', str(SAMPLES / 'example_fixed.urdf')))
+    ok.wait_for('Assuming argument is name of URDF file.')
+    ok.wait_for('Robot initialized')
+    missing = spawn.start('robot_state_publisher', 'no_such.urdf')
+    _, stderr = missing.communicate(timeout=60)
+    assert missing.returncode == 1
+    assert 'Failed to load URDF file no_such.urdf: no_such.urdf: file: no such file' in stderr
+    assert 'Traceback' not in stderr

@@ -329,9 +329,12 @@ def _build_node_class() -> type:
                         reliability=ReliabilityPolicy.RELIABLE,
                     ),
                 )
-            # source_list (string array) is only declared when given: an empty default would
-            # not carry its type in both worlds.
             sources = self._value('source_list', []) if self.has_parameter('source_list') else []
+            if not self.has_parameter('source_list'):
+                # typed, without a default: an empty list would not carry its element type
+                from tf_demo.transport.parameters import Parameter
+
+                self.declare_parameter('source_list', Parameter.Type.STRING_ARRAY)
             for topic in sources:
                 self.create_subscription(sensor_msgs.JointState, topic, self._on_source, 10)
             self._pub = self.create_publisher(sensor_msgs.JointState, 'joint_states', 10)

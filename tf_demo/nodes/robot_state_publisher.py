@@ -265,11 +265,14 @@ def _build_node_class() -> type:
                     'fallback will be removed in the future.'
                 )
                 urdf_file = file_arguments[0]
+                what = 'URDF file'
+            else:
+                what = 'urdf_file'
             if not xml and urdf_file:
                 try:
                     xml = RobotModel.from_file(urdf_file, parse_xacro_args(xacro_args)).xml
                 except (UrdfError, ValueError) as error:
-                    msg = f'Failed to load urdf_file {urdf_file}: {error}'
+                    msg = f'Failed to load {what} {urdf_file}: {error}'
                     raise RobotDescriptionError(msg) from None
                 self.set_parameters([_parameter('robot_description', xml)])
             if not xml:

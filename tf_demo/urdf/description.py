@@ -97,6 +97,7 @@ class RobotDescription:
     links: tuple[str, ...]
     joints: tuple[JointDescription, ...]
     root: str
+    links_with_inertia: frozenset[str] = frozenset()
 
 
 class _Reader:
@@ -295,6 +296,7 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
 
     links: list[str] = []
     link_lines: dict[str, int | None] = {}
+    inertial_links: set[str] = set()
     for node in root.iterchildren('link'):
         link_name = node.get('name')
         if not link_name:
@@ -307,6 +309,8 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
                 node,
             )
         link_lines[link_name] = _line(node)
+        if node.find('inertial') is not None:
+            inertial_links.add(link_name)
         links.append(link_name)
     if not links:
         reader.malformed('<robot>', 'No link elements found in urdf file', root)
@@ -377,7 +381,9 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
         )
     _check_reachable(source, roots[0], links, parent_joint)
     _check_mimics(source, joints, joint_lines)
-    return RobotDescription(robot_name, source, tuple(links), tuple(joints), roots[0])
+    return RobotDescription(
+        robot_name, source, tuple(links), tuple(joints), roots[0], frozenset(inertial_links)
+    )
 
 
 def _cycle_from(start: str, parent_joint: dict[str, JointDescription]) -> list[str]:

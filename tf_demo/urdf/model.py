@@ -134,6 +134,12 @@ class RobotModel:
         self._mimics = _mimics_in_dependency_order(joints)
         self._static: list[JointTransform] = []
         self.warnings: list[str] = []
+        if description.root in description.links_with_inertia:
+            self.warnings.append(
+                f'The root link {description.root} has an inertia specified in the URDF, but KDL '
+                'does not support a root link with an inertia.  As a workaround, you can add an '
+                'extra dummy link to your URDF.'
+            )
         for joint in sorted(joints, key=lambda j: j.name):
             if joint.type in {'fixed', 'planar'}:
                 x, y, z, w = quat_from_rpy(*joint.rpy)
