@@ -262,6 +262,38 @@ def test_echo_failure_block_when_the_tree_changes(spawn, peers):
     assert echo.stdout.readline() == '\n'
 
 
+def read_stderr_until(process, marker, limit_s=60.0):
+    """Read the process' stderr until a line containing ``marker`` (a guard against hangs)."""
+    deadline = time.monotonic() + limit_s
+    lines = []
+    while time.monotonic() < deadline:
+        ready, _, _ = select.select([process.stderr], [], [], 0.5)
+        if not ready:
+            continue
+        line = process.stderr.readline()
+        if not line:
+            break
+        lines.append(line)
+        if marker in line:
+            return line
+    pytest.fail(f'no line with {marker!r} in: {"".join(lines)}')
+    return ''
+
+
+def test_echo_logs_the_waiting_line(spawn):
+    """Before the frames exist tf_echo logs upstream's INFO waiting line (two spaces after ->)."""
+    echo = spawn.start('tf_echo', 'nowhere', 'nothing', '5')
+    line = read_stderr_until(echo, 'Waiting for transform')
+    assert re.fullmatch(
+        LOG_PREFIX.replace(r'[^\]]*', 'tf2_echo')
+        + re.escape(
+            'Waiting for transform nowhere ->  nothing: Invalid frame ID "nowhere" passed '
+            'to canTransform argument target_frame - frame does not exist\n'
+        ),
+        line,
+    )
+
+
 # --- view_frames ---------------------------------------------------------------------------------
 
 
@@ -304,6 +336,14 @@ def test_view_frames_snapshot_with_two_trees(spawn, tmp_path):
     assert code == 0, err
     assert (tmp_path / 'two.gv').read_text().endswith('}->{"map" "base_link"};\n}')
     assert (tmp_path / 'two.pdf').read_bytes().startswith(b'%PDF')
+
+
+def test_view_frames_without_data(spawn, tmp_path):
+    """With nothing published view_frames writes upstream's placeholder graph, and a PDF."""
+    code, _, err = run(spawn, 'view_frames', '-t', '0.5', '-o', 'empty')
+    assert code == 0, err
+    assert (tmp_path / 'empty.gv').read_text() == 'digraph G { "No tf data received" }'
+    assert (tmp_path / 'empty.pdf').read_bytes().startswith(b'%PDF')
 
 
 # --- tf_doctor ---------------------------------------------------------------------------------
@@ -499,3 +539,21 @@ def test_monitor_usage_exit_255(spawn):
     code, _, err = run(spawn, 'tf_monitor', 'only_one')
     assert code == 255
     assert err.endswith('[]: TF_Monitor: usage: tf2_monitor framea frameb\n')
+
+
+def test_monitor_all_frames(spawn, peers):
+    """Without arguments tf_monitor reports every frame, sorted, and one broadcaster line."""
+    peers(static('map', 'odom'), dynamic('odom', 'base_link', rate=20.0))
+    code, out, err = run(spawn, 'tf_monitor', '--interval', '1.5', '--limit', '1')
+    assert code == 0, err
+    lines = out.splitlines()
+    assert lines[:5] == [
+        'Gathering data on all frames for 10 seconds...',
+        '',
+        '',
+        '',
+        'RESULTS: for all Frames',
+    ]
+    assert lines[5:7] == ['', 'Frames:']
+    assert [line.split(',')[0] for line in lines[7:9]] == ['Frame: base_link', 'Frame: odom']
+    assert lines[-1].startswith('Node: <no authority available> ')
