@@ -494,3 +494,73 @@ def test_positional_urdf_file_fallback_of_upstream(spawn: Any) -> None:
     assert missing.returncode == 1
     assert 'Failed to load URDF file no_such.urdf: no_such.urdf: file: no such file' in stderr
     assert 'Traceback' not in stderr
+
+
+def test_backward_sim_time_jump_resets_the_throttle(world: World, capfd: Any) -> None:
+    """With use_sim_time, /clock going backwards warns and lets a throttled stamp through."""
+    from tf_demo.transport.messages import rosgraph_msgs
+    from tf_demo.transport.messages import sensor_msgs
+    from tf_demo.transport.messages import tf2_msgs
+    from tf_demo.transport.qos import QoSProfile
+
+    model = RobotModel.from_file(SAMPLES / 'example_revolute.urdf')
+    rsp = world.rsp(model.xml, use_sim_time=True)
+    client = world.node('sim_clock')
+    clock = client.create_publisher(rosgraph_msgs.Clock, '/clock', QoSProfile(depth=10))
+    received: list[Any] = []
+    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 100)
+    publisher = client.create_publisher(sensor_msgs.JointState, 'joint_states', 10)
+    world.start()
+    wait_until(lambda: publisher.get_subscription_count() >= 1, what='rsp subscription')
+    wait_until(lambda: clock.get_subscription_count() >= 1, what='rsp /clock subscription')
+    wait_until(lambda: client.count_publishers('/tf') >= 1, what='rsp /tf publisher')
+
+    def set_clock(seconds: int) -> None:
+        message = rosgraph_msgs.Clock()
+        message.clock.sec = seconds
+        clock.publish(message)
+        wait_until(lambda: rsp.get_clock().now().nanoseconds == seconds * SECOND, what='sim time')
+
+    set_clock(100)
+    publisher.publish(joint_state(['frame_1_to_frame_2'], [0.1], 100 * SECOND))
+    wait_until(lambda: len(received) == 1, what='first /tf')
+    publisher.publish(joint_state(['frame_1_to_frame_2'], [0.2], 100 * SECOND))
+    time.sleep(0.5)
+    assert len(received) == 1  # same stamp again: throttled
+    set_clock(50)
+    publisher.publish(joint_state(['frame_1_to_frame_2'], [0.3], 100 * SECOND))
+    wait_until(lambda: len(received) == 2, what='/tf after the clock jumped back')
+    assert 'Moved backwards in time, re-publishing joint transforms!' in capfd.readouterr().err
+
+
+def test_jsp_ignores_an_invalid_description_from_the_topic(world: World, capfd: Any) -> None:
+    """A broken description on robot_description is reported; the node keeps running and takes
+    the next valid one."""
+    from tf_demo.nodes.joint_state_publisher import _build_node_class
+    from tf_demo.transport.messages import sensor_msgs
+    from tf_demo.transport.messages import std_msgs
+    from tf_demo.transport.qos import DurabilityPolicy
+    from tf_demo.transport.qos import QoSProfile
+
+    world.add(_build_node_class()(None))
+    client = world.node('description_source')
+    description = client.create_publisher(
+        std_msgs.String,
+        'robot_description',
+        QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL),
+    )
+    states: list[Any] = []
+    client.create_subscription(sensor_msgs.JointState, 'joint_states', states.append, 10)
+    world.start()
+    wait_until(lambda: description.get_subscription_count() >= 1, what='jsp subscription')
+    description.publish(std_msgs.String(data='<robot name="r"><link name="a"></robot>'))
+    wait_until(
+        lambda: 'Invalid robot_description given, ignoring' in capfd.readouterr().err,
+        what='the warning',
+    )
+    time.sleep(0.3)
+    assert states == []
+    xml = RobotModel.from_file(SAMPLES / 'mobile_robot.urdf.xacro').xml
+    description.publish(std_msgs.String(data=xml))
+    wait_until(lambda: bool(states), what='joint states of the valid description')
+    assert list(states[-1].name) == ['left_wheel_joint', 'right_wheel_joint']
