@@ -302,3 +302,11 @@ def test_ros_discovery_info_follows_entity_and_node_changes(world):
     node.destroy_node()
     assert nodes_now() == {'keeper': (0, 0)}
     del keeper
+
+
+def test_node_before_init_is_refused(dds_env):
+    """Creating a node before init() (or after shutdown) raises a RuntimeError saying so."""
+    dds_backend.init()
+    dds_backend.shutdown()
+    with pytest.raises(RuntimeError, match=r'call tf_demo\.transport\.init\(\) before'):
+        dds_backend.DdsNode('early')

@@ -620,6 +620,12 @@ class DdsNode:
         from tf_demo.transport.logging import get_logger
         from tf_demo.transport.parameters import ParameterStore
 
+        if not _context.ok():
+            msg = (
+                'the standalone world is not initialised (or was shut down): call '
+                'tf_demo.transport.init() before creating a node'
+            )
+            raise RuntimeError(msg)
         self._destroyed = False
         self._creation_index = next(_creation_counter)
         arguments: list[str] = []
