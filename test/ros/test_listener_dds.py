@@ -125,6 +125,7 @@ def test_listener_skips_garbage_transforms_and_keeps_the_rest(ros: None) -> None
     listener = TransformListener(buffer, listener_node, spin_thread=True)
     publisher = transport.create_node('garbage_pub')
     broadcaster = TransformBroadcaster(publisher)
+    assert listener.raw_decoding, 'the standalone listener decodes bytes straight into the core'
     try:
         assert wait_for(lambda: publisher.count_subscribers('/tf') >= 1)
         now = time.time_ns()
@@ -221,3 +222,22 @@ def test_timeout_on_sim_time_over_dds(ros: None) -> None:
         assert box == {'result': False}
     finally:
         spinner.stop()
+
+
+def test_message_callbacks_skip_garbage_and_malformed_bytes(ros: None) -> None:
+    """tf2_ros's callback(msg) path and the raw path survive NaN transforms and junk bytes."""
+    node = transport.create_node('direct')
+    buffer = Buffer(node=node)
+    listener = TransformListener(buffer, node)
+    message = tf2_msgs.TFMessage(
+        transforms=[
+            make_transform_stamped('a', 'nan', S, (0.0, float('nan'), 0.0), (0, 0, 0, 1)),
+            make_transform_stamped('a', 'ok', S, (1.0, 0.0, 0.0), (0, 0, 0, 1)),
+        ]
+    )
+    listener.callback(message)
+    listener.static_callback(message)
+    listener._raw_callback(b'\x00\x01\x00\x00\xff\xff')
+    assert buffer.can_transform('a', 'ok', S)
+    assert not buffer.can_transform('a', 'nan', S)
+    listener.unregister()

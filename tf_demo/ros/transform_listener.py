@@ -23,7 +23,9 @@ Compatible with tf2_ros's Python listener (plus rolling's ``tf_topic``/``tf_stat
   with its hidden node), so the user's node keeps its own executor and callbacks, and the buffer
   is marked as fed by a dedicated thread, which makes blocking waits safe everywhere.
 - a transform the buffer rejects (NaN, empty frame id, ...) is logged and skipped; the rest of
-  the message is still used.
+  the message is still used;
+- in the standalone world the subscriptions take the serialised bytes and decode them straight
+  into the buffer's core (no message objects), which is the listener's hot path.
 
 The authority recorded for each transform is ``'default_authority'``, as in tf2_ros Python.
 """
@@ -96,6 +98,9 @@ class TransformListener:
             )
         group = _reentrant_callback_group()
         extra: dict[str, Any] = {} if group is None else {'callback_group': group}
+        self.raw_decoding = _can_decode_raw(host, buffer)
+        if self.raw_decoding:
+            extra['raw'] = True
         from tf_demo.transport.messages import tf2_msgs
 
         self.tf_sub: Any = None
@@ -103,14 +108,14 @@ class TransformListener:
             self.tf_sub = host.create_subscription(
                 tf2_msgs.TFMessage,
                 tf_topic,
-                self.callback,
+                self._raw_callback if self.raw_decoding else self.callback,
                 _dynamic_listener_qos() if qos is None else qos,
                 **extra,
             )
         self.tf_static_sub: Any = host.create_subscription(
             tf2_msgs.TFMessage,
             tf_static_topic,
-            self.static_callback,
+            self._raw_static_callback if self.raw_decoding else self.static_callback,
             _static_listener_qos() if static_qos is None else static_qos,
             **extra,
         )
@@ -149,6 +154,42 @@ class TransformListener:
         """Insert every transform of a ``/tf_static`` message."""
         self._insert_all(data, is_static=True)
 
+    def _raw_callback(self, data: bytes) -> None:
+        self._insert_raw(data, is_static=False)
+
+    def _raw_static_callback(self, data: bytes) -> None:
+        self._insert_raw(data, is_static=True)
+
+    def _insert_raw(self, data: bytes, *, is_static: bool) -> None:
+        """Decode serialised TFMessage bytes straight into the core (no message objects)."""
+        from tf_demo.core.buffer_core import BufferCore
+        from tf_demo.msgs.cdr import CdrError
+        from tf_demo.msgs.cdr import decode_tf_message_transforms
+
+        self.buffer.note_feeder_thread()
+        try:
+            transforms = decode_tf_message_transforms(data)
+        except CdrError as error:
+            self.node.get_logger().error(f'Dropping a malformed TFMessage: {error}')
+            return
+        for parent, child, stamp_ns, translation, rotation in transforms:
+            try:
+                BufferCore.set_transform(
+                    self.buffer,
+                    parent,
+                    child,
+                    stamp_ns,
+                    translation,
+                    rotation,
+                    DEFAULT_AUTHORITY,
+                    is_static,
+                )
+            except Exception as error:
+                self.node.get_logger().error(
+                    f'Failure to set received transform from {child} to {parent} '
+                    f'with error: {error}'
+                )
+
     def _insert_all(self, data: Any, *, is_static: bool) -> None:
         note = getattr(self.buffer, 'note_feeder_thread', None)
         if note is not None:
@@ -186,6 +227,13 @@ class TransformListener:
         if self._private_node is not None:
             _quietly(self._private_node.destroy_node)
             self._private_node = None
+
+
+def _can_decode_raw(host: Any, buffer: Any) -> bool:
+    """Whether to take serialised bytes: a tf_demo buffer on a standalone (DDS) node."""
+    from tf_demo.ros.buffer import Buffer
+
+    return isinstance(buffer, Buffer) and type(host).__module__ == 'tf_demo.transport.dds_backend'
 
 
 def _create_private_node(name: str) -> Any:
