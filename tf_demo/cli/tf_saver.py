@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Sequence
+import math
 import sys
 from typing import Any
 
@@ -46,6 +47,7 @@ from tf_demo.cli._live import ToolError
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotTransform
 from tf_demo.cli._snapshot import write_snapshot
+from tf_demo.core.math3d import quat_normalize
 
 TOOL = 'tf_saver'
 
@@ -67,12 +69,24 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def latest_links(observations: Sequence[Observation]) -> dict[str, SnapshotTransform]:
-    """Return the newest parent→child link per child, with its rate and sample count."""
+    """
+    Return the newest parent→child link per child, with its rate and sample count.
+
+    Quaternions are normalized, as tf2 does on insert; transforms tf2 would ignore (NaN, empty
+    or equal frame ids, zero quaternion) are skipped, so the file always loads again.
+    """
     newest: dict[str, tuple[int, SnapshotTransform]] = {}
     stamps: dict[str, set[int]] = {}
     for observation in sorted(observations, key=lambda o: o.receive_ns):
         is_static = observation.topic == TF_STATIC_TOPIC
         for t in observation.transforms:
+            usable = all(math.isfinite(v) for v in (*t.translation, *t.rotation))
+            if not usable or not t.parent or not t.child or t.parent == t.child:
+                continue  # tf2 ignores these too (TF_NAN_INPUT, TF_SELF_TRANSFORM, ...)
+            try:
+                rotation = quat_normalize(t.rotation)
+            except ValueError:
+                continue
             stamps.setdefault(t.child, set()).add(t.stamp_ns)
             previous = newest.get(t.child)
             if previous is not None and not is_static and t.stamp_ns < previous[0]:
@@ -80,7 +94,7 @@ def latest_links(observations: Sequence[Observation]) -> dict[str, SnapshotTrans
             newest[t.child] = (
                 t.stamp_ns,
                 SnapshotTransform(
-                    t.parent, t.child, t.translation, t.rotation, is_static, t.stamp_ns
+                    t.parent, t.child, t.translation, rotation, is_static, t.stamp_ns
                 ),
             )
     links: dict[str, SnapshotTransform] = {}
