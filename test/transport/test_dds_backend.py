@@ -310,3 +310,21 @@ def test_node_before_init_is_refused(dds_env):
     dds_backend.shutdown()
     with pytest.raises(RuntimeError, match=r'call tf_demo\.transport\.init\(\) before'):
         dds_backend.DdsNode('early')
+
+
+@pytest.mark.dds
+def test_executor_keeps_working_after_shutdown_and_init_again(dds_env):
+    """An executor made before shutdown() delivers messages again after a new init()."""
+    dds_backend.init()
+    executor = dds_backend.SingleThreadedExecutor()
+    dds_backend.shutdown()
+    dds_backend.init()
+    try:
+        node = dds_backend.DdsNode('reborn')
+        received: list[object] = []
+        node.create_subscription(std_msgs.String, 'echo', received.append, 10)
+        node.create_publisher(std_msgs.String, 'echo', 10).publish(std_msgs.String(data='hi'))
+        executor.add_node(node)
+        assert spin_until(executor, lambda: len(received) == 1)
+    finally:
+        dds_backend.shutdown()

@@ -1008,7 +1008,8 @@ class DdsExecutor:
         del context
         self._nodes: list[DdsNode] = []
         self._lock = threading.RLock()
-        self._waitset = dds_wire.WaitSet(_participant())
+        self._waitset_participant = _participant()
+        self._waitset = dds_wire.WaitSet(self._waitset_participant)
         self._attached: dict[int, DdsSubscription] = {}
         self._shutdown = False
         with _context.lock:
@@ -1042,6 +1043,13 @@ class DdsExecutor:
         self._waitset.wake()
 
     def _refresh_conditions(self) -> dict[int, DdsSubscription]:
+        participant = _participant()
+        if participant is not self._waitset_participant:
+            # The world was shut down and initialised again: the old waitset died with the old
+            # participant.
+            self._waitset_participant = participant
+            self._waitset = dds_wire.WaitSet(participant)
+            self._attached = {}
         wanted: dict[int, DdsSubscription] = {}
         for node in self.get_nodes():
             for subscription in node.subscriptions:
