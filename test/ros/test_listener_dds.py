@@ -241,3 +241,35 @@ def test_message_callbacks_skip_garbage_and_malformed_bytes(ros: None) -> None:
     assert buffer.can_transform('a', 'ok', S)
     assert not buffer.can_transform('a', 'nan', S)
     listener.unregister()
+
+
+def test_clock_jumping_back_over_dds_clears_the_buffer(ros: None) -> None:
+    """A bag loop: /clock going back 10 s clears dynamic transforms, static ones stay."""
+    sim_node = transport.create_node(
+        'bag_user', parameter_overrides=[Parameter('use_sim_time', value=True)]
+    )
+    clock_node = transport.create_node('bag_clock')
+    clock_pub = clock_node.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
+    spinner = Spinner(sim_node)
+    buffer = Buffer(node=sim_node)
+
+    def clock_at(seconds: int) -> bool:
+        msg = rosgraph_msgs.Clock()
+        msg.clock.sec = seconds
+        clock_pub.publish(msg)
+        return bool(sim_node.get_clock().now().nanoseconds == seconds * S)
+
+    try:
+        assert wait_for(lambda: clock_at(500))
+        buffer.set_transform(
+            make_transform_stamped('a', 'd', 499 * S, (1, 0, 0), (0, 0, 0, 1)), 'x'
+        )
+        buffer.set_transform_static(
+            make_transform_stamped('a', 's', 0, (2, 0, 0), (0, 0, 0, 1)), 'x'
+        )
+        assert buffer.can_transform('a', 'd', 499 * S)
+        assert wait_for(lambda: clock_at(490))
+        assert not buffer.can_transform('a', 'd', 499 * S)
+        assert buffer.can_transform('a', 's', 0)
+    finally:
+        spinner.stop()
