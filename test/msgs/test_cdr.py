@@ -315,3 +315,15 @@ def test_rclpy_style_objects_are_encoded_by_field_names() -> None:
     assert decoded == Vector3(x=1.0, y=2.0, z=3.0)
     with pytest.raises(cdr.CdrError, match='is not a ROS message type'):
         cdr.serialize(object())
+
+
+def test_long_and_many_distinct_strings_round_trip() -> None:
+    """Strings longer than the struct cache covers, and many distinct lengths, still round-trip."""
+    for length in (0, 1, 3, 4, 5, 1023, 1024, 1025, 5000):
+        text = 'é' * (length // 2) + 'x' * (length % 2)
+        encoded = cdr.serialize(String(data=text))
+        assert encoded == reference_serialize('std_msgs/msg/String', String(data=text))
+        assert cdr.deserialize(String, encoded).data == text
+    names = [f'{"n" * (i % 37)}{i}' for i in range(300)]
+    joint_state = JointState(name=names, position=[float(i) for i in range(300)])
+    assert cdr.deserialize(JointState, cdr.serialize(joint_state)) == joint_state

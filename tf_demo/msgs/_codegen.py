@@ -60,8 +60,10 @@ def _lowbit(value: int) -> int:
     return _MAX_ALIGN if value == 0 else min(_MAX_ALIGN, value & -value)
 
 
-#: Strings up to this length get their dynamic structs cached (longer ones are rare).
+#: Strings up to this length get their dynamic structs cached (longer ones are rare) ...
 _MAX_CACHED_STRING = 1024
+#: ... and each cache stops growing at this many entries (input from the network is untrusted).
+_MAX_CACHE_ENTRIES = 4096
 #: One item of a run: (struct code, alignment, size).
 Item = tuple[str, int, int]
 
@@ -101,7 +103,7 @@ class DynamicStructs:
             end += pad + size
         compiled = Struct(self.endian + fmt)
         entry = (compiled.unpack_from, end - (pos - 4)) if self.decode else compiled.pack
-        if length <= _MAX_CACHED_STRING:
+        if length <= _MAX_CACHED_STRING and len(self.cache) < _MAX_CACHE_ENTRIES:
             self.cache[length << 3 | pos & 7] = entry
         return entry
 
@@ -133,7 +135,7 @@ class RunLayouts:
                 fmt += f'{length}sx'
                 end += length + 1
         pack = Struct(fmt).pack
-        if max(lengths) <= _MAX_CACHED_STRING:
+        if max(lengths) <= _MAX_CACHED_STRING and len(self.cache) < _MAX_CACHE_ENTRIES:
             self.cache[key] = pack
         return pack
 
