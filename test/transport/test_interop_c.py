@@ -41,35 +41,37 @@ PEER_IDL = HERE / 'c_peer' / 'ros_types.idl'
 HELPER = HERE / 'dds_peer_node.py'
 
 
+def _build_peer(build: Path, *, type_information: bool) -> Path:
+    """Generate the types with idlc (``-t``: no type information, as rmw) and compile the peer."""
+    idlc_flags = [] if type_information else ['-t']
+    subprocess.run(['idlc', *idlc_flags, str(PEER_IDL)], cwd=build, check=True, timeout=60)
+    binary = build / 'ros_peer'
+    compile_command = ['gcc', '-O1', '-Wall', '-Wextra', '-Werror', '-o', str(binary)]
+    compile_command += [str(PEER_SOURCE), str(build / 'ros_types.c'), f'-I{build}', '-lddsc']
+    subprocess.run(compile_command, check=True, timeout=120)
+    return binary
+
+
 @pytest.fixture(scope='module')
-def c_peer(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """Compile the C peer; skip when gcc, idlc or the Cyclone 0.10 headers are missing."""
+def c_toolchain() -> None:
+    """Skip when gcc, idlc or the Cyclone 0.10 headers are missing."""
     missing = [tool for tool in ('gcc', 'idlc') if shutil.which(tool) is None]
     if not Path('/usr/include/dds/dds.h').exists():
         missing.append('cyclonedds-dev (/usr/include/dds/dds.h)')
     if missing:
         pytest.skip(f'C interop peer cannot be built, missing: {", ".join(missing)}')
-    build = tmp_path_factory.mktemp('c_peer')
-    subprocess.run(['idlc', '-t', str(PEER_IDL)], cwd=build, check=True, timeout=60)
-    binary = build / 'ros_peer'
-    subprocess.run(
-        [
-            'gcc',
-            '-O1',
-            '-Wall',
-            '-Wextra',
-            '-Werror',
-            '-o',
-            str(binary),
-            str(PEER_SOURCE),
-            str(build / 'ros_types.c'),
-            f'-I{build}',
-            '-lddsc',
-        ],
-        check=True,
-        timeout=120,
-    )
-    return binary
+
+
+@pytest.fixture(scope='module')
+def c_peer(c_toolchain: None, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The rmw-like C peer: types without type information."""
+    return _build_peer(tmp_path_factory.mktemp('c_peer'), type_information=False)
+
+
+@pytest.fixture(scope='module')
+def c_peer_typed(c_toolchain: None, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The same C peer with XTypes type information (what plain Cyclone applications send)."""
+    return _build_peer(tmp_path_factory.mktemp('c_peer_typed'), type_information=True)
 
 
 class Process:
@@ -202,3 +204,17 @@ def test_c_peer_sees_dds_node_in_ros_discovery_info(c_peer, run):
     reader = run(str(c_peer), 'discovery', 'interop_probe', '20')
     assert reader.finish() == 0, (reader.stdout, reader.stderr)
     assert 'node / interop_probe readers=0 writers=1' in reader.stdout
+
+
+def test_typed_c_peer_matches_by_type_name_because_we_send_no_type_information(c_peer_typed, run):
+    """A C peer that does send type information still matches: our side sends none."""
+    # Were our placeholder type's information on the wire, Cyclone would compare it with the
+    # peer's real TFMessage_ type, find them not assignable and never match.
+    subscriber = run(*python_peer('sub', '--count', '3'))
+    subscriber.wait_for_line('ready')
+    publisher = run(str(c_peer_typed), 'pub-tf', '3', '20')
+    assert publisher.finish() == 0, publisher.stderr
+    assert subscriber.finish() == 0
+    assert [line.split()[:3] for line in subscriber.stdout if line.startswith('msg ')] == [
+        ['msg', 'c_child', str(i)] for i in range(3)
+    ]
