@@ -21,7 +21,8 @@ Same methods, signatures and results as ``tf2_ros.Buffer`` (Jazzy), with these i
 :class:`threading.Condition` that the core's insert callback and the clock's jump callback
 notify; there is no 20 ms polling. Deadlines are measured on the buffer's clock (the node's
 clock when ``node`` is given), so ``use_sim_time`` works: a wait of 2 s ends when ``/clock`` has
-advanced 2 s, whatever the wall clock does.
+advanced 2 s, whatever the wall clock does (so, as in C++ tf2, a paused simulation never times
+out).
 
 **No deadlock in a single-threaded executor.** A blocking wait can only succeed if some other
 thread fills the buffer. The buffer knows which threads deliver data to it (the listener reports
@@ -252,7 +253,8 @@ class Buffer(BufferCore):
     def _on_new_data(self) -> None:
         """Core insert callback: wake blocking waits and resolve asynchronous ones."""
         self._wake()
-        self._service_async_waits(now_ns=None)
+        if self._async_waits:
+            self._service_async_waits(now_ns=None)
 
     def note_feeder_thread(self) -> None:
         """Record that the calling thread delivers transforms (called by the listener)."""
