@@ -1091,7 +1091,12 @@ class DdsExecutor:
         callback(*args)
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
-        """Wait up to ``timeout_sec`` (None: until something happens) and run what is ready."""
+        """
+        Wait up to ``timeout_sec`` (None: until something happens) and run what is ready.
+
+        Unlike rclpy, which runs one callback per call, every due timer and every waiting
+        sample (up to 256 per subscription) is handled, so a busy topic is drained in one call.
+        """
         if not _context.ok() or self._shutdown:
             return
         deadline = None if timeout_sec is None else time.monotonic() + max(0.0, timeout_sec)
