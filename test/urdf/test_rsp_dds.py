@@ -72,12 +72,19 @@ class World:
     def node(self, name: str) -> Any:
         return self.add(self.transport.create_node(name))
 
-    def rsp(self, xml: str, **parameters: Any) -> Any:
+    def rsp(self, xml: str, *, reliable_input: bool = True, **parameters: Any) -> Any:
         from tf_demo.nodes.robot_state_publisher import _build_node_class
         from tf_demo.transport.parameters import Parameter
 
+        # reliable joint_states (upstream's qos_overrides) so a busy machine cannot drop input
+        reliable = {
+            'qos_overrides./joint_states.subscription.reliability': 'reliable',
+            'qos_overrides./joint_states.subscription.depth': 100,
+        }
+        if not reliable_input:
+            reliable = {}
         overrides = [Parameter('robot_description', value=xml)]
-        overrides += [Parameter(k, value=v) for k, v in parameters.items()]
+        overrides += [Parameter(k, value=v) for k, v in {**reliable, **parameters}.items()]
         return self.add(_build_node_class()((), parameter_overrides=overrides))
 
     def start(self) -> None:
@@ -564,3 +571,31 @@ def test_jsp_ignores_an_invalid_description_from_the_topic(world: World, capfd: 
     description.publish(std_msgs.String(data=xml))
     wait_until(lambda: bool(states), what='joint states of the valid description')
     assert list(states[-1].name) == ['left_wheel_joint', 'right_wheel_joint']
+
+
+def test_topics_and_qos_are_upstreams(world: World) -> None:
+    """joint_states: sensor data QoS; /tf: reliable volatile 100; /tf_static and
+    robot_description: reliable transient local 1."""
+    from tf_demo.transport.qos import DurabilityPolicy
+    from tf_demo.transport.qos import ReliabilityPolicy
+
+    rsp = world.rsp(RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml, reliable_input=False)
+    [joint_states] = [s for s in rsp.subscriptions if s.topic_name == '/joint_states']
+    qos = joint_states.qos_profile
+    assert (qos.reliability, qos.durability, qos.depth) == (
+        ReliabilityPolicy.BEST_EFFORT,
+        DurabilityPolicy.VOLATILE,
+        5,
+    )
+    publishers = {p.topic_name: p.qos_profile for p in rsp.publishers}
+    expected = {
+        '/tf': (ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE, 100),
+        '/tf_static': (ReliabilityPolicy.RELIABLE, DurabilityPolicy.TRANSIENT_LOCAL, 1),
+        '/robot_description': (ReliabilityPolicy.RELIABLE, DurabilityPolicy.TRANSIENT_LOCAL, 1),
+    }
+    for topic, policies in expected.items():
+        qos = publishers[topic]
+        assert (qos.reliability, qos.durability, qos.depth) == policies, topic
+    assert rsp.get_parameter('publish_frequency').value == 20.0
+    assert rsp.get_parameter('ignore_timestamp').value is False
+    assert rsp.get_parameter('frame_prefix').value == ''
