@@ -33,6 +33,7 @@ from collections.abc import Iterable
 from collections.abc import Sequence
 import contextlib
 import inspect
+import itertools
 import re
 import threading
 import time
@@ -586,7 +587,7 @@ class ReentrantCallbackGroup(CallbackGroup):
 # Node
 # --------------------------------------------------------------------------------------------
 
-_creation_counter = iter(range(1 << 62))
+_creation_counter = itertools.count()
 
 
 class DdsNode:
