@@ -146,7 +146,7 @@ def assert_yaw_quaternion(actual: tuple[float, ...], yaw: float) -> None:
 def test_late_listener_gets_static_and_interpolates_the_analytic_circle(
     spawn: Any, ros: None
 ) -> None:
-    """Static + dynamic publishers; a listener started later sees both; lookups match 1e-6."""
+    """Static + dynamic publishers; listeners started later see both; lookups match to 1e-6."""
     # Expected values are analytic: the course's circle at the published stamps, interpolated
     # as tf2 does (linear position, slerp of the yaw), composed with the static camera offset.
     static = spawn.start('static_tf_pub')
@@ -196,6 +196,9 @@ def test_late_listener_gets_static_and_interpolates_the_analytic_circle(
                 )
                 assert xyz(out) == pytest.approx(expected_camera_in_odom(yaw, position), abs=1e-6)
                 assert_yaw_quaternion(xyzw(out), yaw)
+        late_process = spawn.start('tf_listener', '--ros-args', '-p', 'period:=0.2')
+        line = Output(late_process).wait_for_line('Transform odom <- camera_link at ')
+        assert line.endswith('z=0.200')
     finally:
         listener.unregister()
 
