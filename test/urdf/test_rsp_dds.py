@@ -599,3 +599,30 @@ def test_topics_and_qos_are_upstreams(world: World) -> None:
     assert rsp.get_parameter('publish_frequency').value == 20.0
     assert rsp.get_parameter('ignore_timestamp').value is False
     assert rsp.get_parameter('frame_prefix').value == ''
+
+
+def test_qos_overrides_parameters_change_the_profiles(world: World) -> None:
+    """qos_overrides.<topic>.<entity>.<policy> parameters are declared and applied at start."""
+    from tf_demo.transport.qos import DurabilityPolicy
+    from tf_demo.transport.qos import HistoryPolicy
+
+    rsp = world.rsp(
+        RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml,
+        **{
+            'qos_overrides./tf.publisher.depth': 7,
+            'qos_overrides./tf.publisher.durability': 'transient_local',
+            'qos_overrides./tf_static.publisher.history': 'keep_all',
+        },
+    )
+    publishers = {p.topic_name: p.qos_profile for p in rsp.publishers}
+    assert publishers['/tf'].depth == 7
+    assert publishers['/tf'].durability == DurabilityPolicy.TRANSIENT_LOCAL
+    assert publishers['/tf_static'].history == HistoryPolicy.KEEP_ALL
+    assert rsp.get_parameter('qos_overrides./tf_static.publisher.depth').value == 1
+    with pytest.raises(
+        ValueError, match=r"invalid value 'sometimes' for parameter qos_overrides\./tf\.publisher"
+    ):
+        world.rsp(
+            RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml,
+            **{'qos_overrides./tf.publisher.reliability': 'sometimes'},
+        )

@@ -300,9 +300,19 @@ def _build_node_class() -> type:
             self._raw_tf = True
             self._static: dict[str, Any] = {}
             self._tf_pub = self.create_publisher(
-                tf2_msgs.TFMessage, '/tf', DynamicBroadcasterQoS()
+                tf2_msgs.TFMessage,
+                '/tf',
+                self._qos_with_overrides(
+                    '/tf', 'publisher', DynamicBroadcasterQoS(), _TF_OVERRIDABLE
+                ),
             )
-            self._tf_static_pub = self.create_publisher(tf2_msgs.TFMessage, '/tf_static', latched)
+            self._tf_static_pub = self.create_publisher(
+                tf2_msgs.TFMessage,
+                '/tf_static',
+                self._qos_with_overrides(
+                    '/tf_static', 'publisher', _copy_qos(latched), _TF_STATIC_OVERRIDABLE
+                ),
+            )
             self.add_on_set_parameters_callback(self._on_set_parameters)
             self.create_subscription(
                 sensor_msgs.JointState,
