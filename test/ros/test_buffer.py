@@ -178,7 +178,8 @@ def test_wait_in_the_only_feeder_thread_returns_at_once() -> None:
     buffer = Buffer(clock=clock)
 
     def feeder_waits() -> object:
-        buffer.note_feeder_thread()
+        for _ in range(3):
+            buffer.note_feeder_thread()
         return buffer.can_transform('a', 'b', 0, Duration(seconds=1000))
 
     thread, box = in_thread(feeder_waits)

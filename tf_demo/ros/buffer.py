@@ -26,9 +26,10 @@ out).
 
 **No deadlock in a single-threaded executor.** A blocking wait can only succeed if some other
 thread fills the buffer. The buffer knows which threads deliver data to it (the listener reports
-the thread of every ``/tf`` callback) and whether a dedicated thread does (``TransformListener(
+the thread of every ``/tf`` message) and whether a dedicated thread does (``TransformListener(
 ..., spin_thread=True)`` or :meth:`Buffer.set_using_dedicated_thread`). When the waiting thread is
-the only thread that has ever delivered data and there is no dedicated thread, data cannot arrive
+the only thread that has delivered data (three messages or more, so that a thread pool has had a
+chance to show its other threads) and there is no dedicated thread, data cannot arrive
 while it waits (it would be delivered by this very thread after the callback returns), so the
 wait does not block: it returns at once with the current answer (``False``, or the core's
 exception for ``lookup_transform``) and logs C++ tf2's "dedicated thread" warning once. Use
@@ -75,6 +76,8 @@ from tf_demo.ros.geometry import TransformFunction
 DEFAULT_CACHE_TIME_NS = 10_000_000_000
 JUMP_BACK_CLEAR_THRESHOLD_NS = 1_000_000_000
 """A backward jump of at least this much clears the buffer (tf2_ros Python's threshold)."""
+SOLE_FEEDER_EVIDENCE = 3
+"""Deliveries all from one thread before a wait in that thread is known to be hopeless."""
 MAX_WAIT_SLICE_S = 1.0
 """Longest single condition wait; bounds how late a deadline on a silent clock is noticed."""
 
@@ -186,7 +189,7 @@ class Buffer(BufferCore):
         self._async_waits: list[_AsyncWait] = []
         self._watcher: threading.Thread | None = None
         self._dedicated_thread = False
-        self._feeder_threads: set[int] = set()
+        self._feeder_deliveries: dict[int, int] = {}
         self._warned_no_dedicated_thread = False
         self._extra_transforms: dict[str, TransformFunction] = {}
         if clock is None:
@@ -259,9 +262,10 @@ class Buffer(BufferCore):
     def note_feeder_thread(self) -> None:
         """Record that the calling thread delivers transforms (called by the listener)."""
         ident = threading.get_ident()
-        if ident not in self._feeder_threads:
+        count = self._feeder_deliveries.get(ident, 0)
+        if count < SOLE_FEEDER_EVIDENCE:
             with self._condition:
-                self._feeder_threads.add(ident)
+                self._feeder_deliveries[ident] = count + 1
 
     def set_using_dedicated_thread(self, value: bool) -> None:
         """Declare that a thread other than the callers' fills this buffer (C++'s name)."""
@@ -273,8 +277,9 @@ class Buffer(BufferCore):
         if self._dedicated_thread:
             return True
         with self._condition:
-            feeders = set(self._feeder_threads)
-        return feeders != {threading.get_ident()}
+            deliveries = dict(self._feeder_deliveries)
+        sole_feeder = set(deliveries) == {threading.get_ident()}
+        return not (sole_feeder and max(deliveries.values()) >= SOLE_FEEDER_EVIDENCE)
 
     def _wait_until(self, ready: Callable[[], bool], timeout_ns: int) -> None:
         """Block until ``ready()`` or until ``timeout_ns`` passed on the buffer's clock."""
