@@ -163,3 +163,20 @@ def test_expanded_xacro_is_validated_like_urdf(tmp_path: Path) -> None:
     )
     with pytest.raises(UrdfBrokenRefError, match=r"bad\.urdf\.xacro:\d+: joint 'j': child link"):
         RobotModel.from_file(bad)
+
+
+def test_package_path_variable_is_searched(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Packages are also found through the TF_DEMO_PACKAGE_PATH search path."""
+    write_package(tmp_path / 'elsewhere', 'parts_pkg', {'urdf/parts.xacro': PARTS})
+    monkeypatch.setenv('TF_DEMO_PACKAGE_PATH', f'/nonexistent:{tmp_path / "elsewhere"}')
+    monkeypatch.setenv('AMENT_PREFIX_PATH', '')
+    main = tmp_path / 'r.xacro'
+    main.write_text(
+        f'<robot name="r" {XACRO_NS}>'
+        '<xacro:include filename="$(find parts_pkg)/urdf/parts.xacro"/>'
+        '<link name="base"/><xacro:arm parent="base"/></robot>'
+    )
+    model = RobotModel.from_file(main)
+    assert [child for _, child, _, _ in model.static_transforms()] == ['arm_link']
