@@ -511,7 +511,8 @@ class _EncoderBuilder(_Builder):
             self.known = entry
             self.value(field, element)
             self.flush()
-            self.emit('pass')
+            if len(self.lines) == start + 1:
+                self.emit('pass')  # an element with nothing to write
             self.indent -= 1
             if self.known >= entry:
                 break
@@ -546,9 +547,10 @@ class _EncoderBuilder(_Builder):
             if prim.size > entry:
                 self.emit(f'out += _ZEROS[(4 - len(out)) & {prim.size - 1}]')
             if prim.array_code:
-                swap = '' if sys.byteorder == 'little' or prim.size == 1 else '.byteswap()'
                 converted = self.name('r')
-                self.emit(f'{converted} = _array({prim.array_code!r}, {sequence}){swap}')
+                self.emit(f'{converted} = _array({prim.array_code!r}, {sequence})')
+                if sys.byteorder != 'little' and prim.size > 1:
+                    self.emit(f'{converted}.byteswap()')  # the wire is little-endian
                 self.emit(f'out += {converted}.tobytes()')
             else:
                 self.emit(f'out += bytes([1 if x else 0 for x in {sequence}])')
