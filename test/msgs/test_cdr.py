@@ -327,3 +327,10 @@ def test_long_and_many_distinct_strings_round_trip() -> None:
     names = [f'{"n" * (i % 37)}{i}' for i in range(300)]
     joint_state = JointState(name=names, position=[float(i) for i in range(300)])
     assert cdr.deserialize(JointState, cdr.serialize(joint_state)) == joint_state
+
+
+def test_unknown_types_are_a_cdr_error() -> None:
+    """Asking for a type outside the table is a CdrError naming it, for names and classes."""
+    with pytest.raises(cdr.CdrError, match="'foo_msgs/msg/Bar' is not a ROS message type"):
+        cdr.deserialize('foo_msgs/msg/Bar', b'\x00\x01\x00\x00')
+    assert cdr.msgtype_of('geometry_msgs/Vector3') == 'geometry_msgs/msg/Vector3'

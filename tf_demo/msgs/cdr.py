@@ -59,21 +59,26 @@ _TF_MESSAGE = 'tf2_msgs/msg/TFMessage'
 
 def msgtype_of(message_or_type: Any) -> str:
     """
-    Return ``pkg/msg/Name`` for one of our classes, an rclpy class, or an instance of either.
+    Return ``pkg/msg/Name`` for a type name, our class, an rclpy class, or an instance.
 
-    rclpy classes are recognised by their module (``geometry_msgs.msg._vector3``).
+    ``'pkg/Name'`` is accepted too; rclpy classes are recognised by their module
+    (``geometry_msgs.msg._vector3``).
 
     :raises CdrError: the object is no ROS message type this package knows.
     """
-    cls = message_or_type if isinstance(message_or_type, type) else type(message_or_type)
-    msgtype = getattr(cls, '__msgtype__', None)
-    if msgtype is None:
-        package, _, _ = str(getattr(cls, '__module__', '')).partition('.msg')
-        msgtype = f'{package}/msg/{cls.__name__}'
+    if isinstance(message_or_type, str):
+        msgtype, what = message_or_type, repr(message_or_type)
+    else:
+        cls = message_or_type if isinstance(message_or_type, type) else type(message_or_type)
+        msgtype = getattr(cls, '__msgtype__', None)
+        if msgtype is None:
+            package, _, _ = str(getattr(cls, '__module__', '')).partition('.msg')
+            msgtype = f'{package}/msg/{cls.__name__}'
+        what = f'{cls.__module__}.{cls.__name__}'
     try:
         return spec_for(msgtype).msgtype
     except KeyError:
-        msg = f'{cls.__module__}.{cls.__name__} is not a ROS message type tf_demo.msgs knows'
+        msg = f'{what} is not a ROS message type tf_demo.msgs knows'
         raise CdrError(msg) from None
 
 
@@ -125,7 +130,7 @@ def deserialize(msg_type: type[MessageT] | str | Any, data: bytes | bytearray | 
     :raises CdrError: wrong header, truncated or malformed bytes; the message names the field
         and byte offset.
     """
-    msgtype = spec_for(msg_type).msgtype if isinstance(msg_type, str) else msgtype_of(msg_type)
+    msgtype = msgtype_of(msg_type)
     buf = data if type(data) is bytes else bytes(data)
     check_header(msgtype, buf)
     try:
