@@ -30,7 +30,8 @@ A scenario is ``{"cache_time_ns": int, "ops": [op, ...]}``; the operations are:
 ``["lookup_full", target, target_time_ns, source, source_time_ns, fixed]``
     result ``{"t": [3], "q": [4], "stamp": ns}`` or ``{"exc": class name, "msg": text}``.
 ``["can", target, source, time_ns]`` and ``["can_full", target, tt, source, st, fixed]``
-    result ``{"ok": bool, "msg": text}``.
+    result ``{"ok": bool, "msg": text}``; ``can`` adds ``"exists": [bool, bool]`` for its
+    target and source (``_frameExists``).
 ``["lct", target, source]``
     result ``{"stamp": ns}`` or an exception object.
 ``["chain", target, target_time_ns, source, source_time_ns, fixed]``
@@ -104,7 +105,8 @@ def _run_op(buffer, op):
         return None
     if kind == 'can':
         ok, msg = buffer.can_transform_core(op[1], op[2], _time(op[3]))
-        return {'ok': bool(ok), 'msg': msg}
+        exists = [bool(buffer._frameExists(name)) for name in (op[1], op[2])]
+        return {'ok': bool(ok), 'msg': msg, 'exists': exists}
     if kind == 'can_full':
         ok, msg = buffer.can_transform_full_core(op[1], _time(op[2]), op[3], _time(op[4]), op[5])
         return {'ok': bool(ok), 'msg': msg}
