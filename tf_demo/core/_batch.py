@@ -31,7 +31,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 from tf_demo.core.math3d import quat_multiply_batch
 from tf_demo.core.math3d import rotate_vector_batch
-from tf_demo.core.math3d import slerp_batch
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
@@ -51,15 +50,32 @@ _ENDING_SOURCE_PARENT = 2
 _ENDING_FULL = 3
 
 
-def _interpolate(data: FloatArray, older: IntArray, ratio: FloatArray) -> FloatArray:
-    """Interpolate rows ``older`` and ``older + 1`` of ``data`` at ``ratio`` (as TimeCache)."""
+def _interpolate(columns: FloatArray, older: IntArray, ratio: FloatArray) -> FloatArray:
+    """Interpolate samples ``older`` and ``older + 1`` (``columns`` is ``(7, K)``) at ``ratio``."""
     keep = 1.0 - ratio
-    one = data[older]
-    two = data[older + 1]
-    out = np.empty((older.shape[0], 7))
-    out[:, :3] = keep[:, None] * one[:, :3] + ratio[:, None] * two[:, :3]
-    out[:, 3:] = slerp_batch(one[:, 3:], two[:, 3:], ratio)
-    return out
+    newer = older + 1
+    one = [np.take(columns[i], older) for i in range(7)]
+    two = [np.take(columns[i], newer) for i in range(7)]
+    out = np.empty((7, older.shape[0]))
+    for i in range(3):
+        np.add(keep * one[i], ratio * two[i], out=out[i])
+    x0, y0, z0, w0 = one[3:]
+    x1, y1, z1, w1 = two[3:]
+    dot = x0 * x1 + y0 * y1 + z0 * z1 + w0 * w1
+    negative = dot < 0
+    theta = np.arccos(np.minimum(np.abs(dot), 1.0))
+    moving = theta != 0.0
+    safe = np.where(moving, theta, 1.0)
+    d = 1.0 / np.sin(safe)
+    s0 = np.sin(keep * safe) * d
+    s1 = np.sin(ratio * safe) * d
+    s1 = np.where(negative, -s1, s1)
+    s0 = np.where(moving, s0, 1.0)
+    s1 = np.where(moving, s1, 0.0)
+    for i, (a, b) in enumerate(((x0, x1), (y0, y1), (z0, z1), (w0, w1))):
+        np.add(a * s0, b * s1, out=out[3 + i])
+    result: FloatArray = out.T
+    return result
 
 
 def sample_batch(
@@ -79,12 +95,10 @@ def sample_batch(
             np.array([sample[7]], dtype=np.int64),
             None,
         )
-    stamps, table = cache.arrays()
+    stamps, columns, parent_ids = cache.arrays()
     size = stamps.shape[0]
     if size == 0:
         return np.zeros((1, 7)), np.zeros(1, dtype=np.int64), np.zeros(count, dtype=bool)
-    data = table[:, :7]
-    parent_ids = table[:, 7].astype(np.int64)
     latest = stamps[-1]
     earliest = stamps[0]
     if size > 1 and count and times.min() > earliest and times.max() < latest:
@@ -95,10 +109,10 @@ def sample_batch(
         ratio = (times - one_stamp).astype(np.float64) / (stamps[older + 1] - one_stamp).astype(
             np.float64
         )
-        values = _interpolate(data, older, ratio)
+        values = _interpolate(columns, older, ratio)
         switched = one_parent != parent_ids[older + 1]
         if switched.any():
-            values[switched] = data[older[switched]]
+            values[switched] = columns[:, older[switched]].T
         return values, one_parent, None
 
     values = np.zeros((count, 7))
@@ -127,11 +141,11 @@ def sample_batch(
                 ratio = (lane_times[same_parent] - one_stamp).astype(np.float64) / (
                     stamps[older + 1] - one_stamp
                 ).astype(np.float64)
-                values[lanes] = _interpolate(data, older, ratio)
+                values[lanes] = _interpolate(columns, older, ratio)
                 parents[lanes] = parent_ids[older]
                 single[lanes] = -2
     chosen = single >= 0
-    values[chosen] = data[single[chosen]]
+    values[chosen] = columns[:, single[chosen]].T
     parents[chosen] = parent_ids[single[chosen]]
     ok = single != -1
     return values, parents, None if ok.all() else ok
@@ -162,10 +176,14 @@ def batch_walk(
     inverse_t = rotate_vector_batch(inverse_q, -tgt_t)
     if full.all():
         return (
-            rotate_vector_batch(inverse_q, src_t) + inverse_t,
-            quat_multiply_batch(inverse_q, src_q),
+            _full(rotate_vector_batch(inverse_q, src_t) + inverse_t, count),
+            _full(quat_multiply_batch(inverse_q, src_q), count),
             failed,
         )
+    src_t = _full(src_t, count)
+    src_q = _full(src_q, count)
+    inverse_t = _full(inverse_t, count)
+    inverse_q = _full(inverse_q, count)
     translations = src_t.copy()
     rotations = src_q.copy()
     lanes = ending == _ENDING_SOURCE_PARENT
@@ -175,6 +193,14 @@ def batch_walk(
     rotations[full] = quat_multiply_batch(inverse_q[full], src_q[full])
     failed |= ending == _ENDING_NONE
     return translations, rotations, failed
+
+
+def _full(array: FloatArray, count: int) -> FloatArray:
+    """Return ``array`` with ``count`` rows (broadcasting a single row)."""
+    if array.shape[0] == count:
+        return array
+    out: FloatArray = np.repeat(array, count, axis=0)
+    return out
 
 
 def _side_walk(
@@ -195,9 +221,10 @@ def _side_walk(
     """
     top, failed, ending = state
     count = times.shape[0]
-    acc_t = np.zeros((count, 3))
-    acc_q = np.zeros((count, 4))
-    acc_q[:, 3] = 1.0
+    # The accumulators stay (1, n) while every lane has seen the same links (static links at
+    # the bottom of the chain); they broadcast to (count, n) at the first per-lane value.
+    acc_t = np.zeros((1, 3))
+    acc_q = np.array([[0.0, 0.0, 0.0, 1.0]])
     frame = np.full(count, start_id, dtype=np.int64)
     active = np.ones(count, dtype=bool) if source_side else (ending == _ENDING_NONE) & ~failed
     for _ in range(_MAX_GRAPH_DEPTH + 1):
@@ -257,6 +284,10 @@ def _side_walk(
                 if source_side:
                     top[:] = frame_id
             else:
+                if acc_t.shape[0] != count:
+                    acc_t = np.repeat(acc_t, count, axis=0)
+                if acc_q.shape[0] != count:
+                    acc_q = np.repeat(acc_q, count, axis=0)
                 acc_t[lanes] = rotate_vector_batch(quats, acc_t[lanes]) + values[:, :3]
                 acc_q[lanes] = quat_multiply_batch(quats, acc_q[lanes])
                 frame[lanes] = parents

@@ -517,5 +517,25 @@ def quat_from_matrix_batch(m: npt.NDArray[np.float64]) -> npt.NDArray[np.float64
 
 
 def canonical_quat_batch(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-    """Row-wise :func:`canonical_quat`."""
-    return quat_from_matrix_batch(matrix_from_quat_batch(q))
+    """
+    Row-wise :func:`canonical_quat`, without building the matrices.
+
+    The sign is chosen with the same matrix diagonal (same arithmetic) as tf2's
+    ``getRotation``; the magnitude is ``q / |q|``, which equals the matrix route to about
+    1e-16.
+    """
+    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    d = x * x + y * y + z * z + w * w
+    with np.errstate(divide='ignore', invalid='ignore'):
+        s = 2.0 / d
+        xx = x * (x * s)
+        yy = y * (y * s)
+        zz = z * (z * s)
+        m00 = 1.0 - (yy + zz)
+        m11 = 1.0 - (xx + zz)
+        m22 = 1.0 - (xx + yy)
+        trace = m00 + m11 + m22
+        largest = np.where(m00 < m11, np.where(m11 < m22, 2, 1), np.where(m00 < m22, 2, 0))
+        pivot = np.where(trace > 0.0, w, np.take_along_axis(q, largest[:, None], axis=1)[:, 0])
+        scale = np.where(pivot < 0.0, -1.0, 1.0) / np.sqrt(d)
+    return q * scale[:, None]

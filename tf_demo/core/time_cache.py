@@ -127,7 +127,10 @@ class TimeCache:
         self._samples: list[Sample] = []
         self._start = 0
         self._version = 0
-        self._arrays: tuple[int, npt.NDArray[np.int64], npt.NDArray[np.float64]] | None = None
+        self._arrays: (
+            tuple[int, npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int64]]
+            | None
+        ) = None
 
     # --- insertion -----------------------------------------------------------------------
 
@@ -334,21 +337,26 @@ class TimeCache:
             for s in (self._samples[index],)
         ]
 
-    def arrays(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64]]:
+    def arrays(
+        self,
+    ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int64]]:
         """
-        Return the live samples as numpy arrays, ascending: stamps ``(K,)``, samples ``(K, 8)``.
+        Return the live samples as numpy arrays, ascending by stamp.
 
-        Column 7 holds the parent id.  The arrays are cached until the next change; treat them
-        as read-only.
+        :returns: stamps ``(K,)``, values ``(7, K)`` (one contiguous row per component:
+            tx, ty, tz, qx, qy, qz, qw) and parent ids ``(K,)``.  Cached until the next change;
+            treat them as read-only.
         """
         cached = self._arrays
         if cached is not None and cached[0] == self._version:
-            return cached[1], cached[2]
+            return cached[1], cached[2], cached[3]
         start = self._start
         stamps = np.array(self._stamps[start:], dtype=np.int64)
-        samples = np.array(self._samples[start:], dtype=np.float64).reshape(-1, 8)
-        self._arrays = (self._version, stamps, samples)
-        return stamps, samples
+        table = np.array(self._samples[start:], dtype=np.float64).reshape(-1, 8).T
+        values = np.ascontiguousarray(table[:7])
+        parents = table[7].astype(np.int64)
+        self._arrays = (self._version, stamps, values, parents)
+        return stamps, values, parents
 
 
 class StaticCache:
