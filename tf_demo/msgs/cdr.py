@@ -70,8 +70,10 @@ def msgtype_of(message_or_type: Any) -> str:
         msgtype, what = message_or_type, repr(message_or_type)
     else:
         cls = message_or_type if isinstance(message_or_type, type) else type(message_or_type)
-        msgtype = getattr(cls, '__msgtype__', None)
-        if msgtype is None:
+        declared = getattr(cls, '__msgtype__', None)
+        if isinstance(declared, str):
+            msgtype = declared
+        else:
             package, _, _ = str(getattr(cls, '__module__', '')).partition('.msg')
             msgtype = f'{package}/msg/{cls.__name__}'
         what = f'{cls.__module__}.{cls.__name__}'
