@@ -238,22 +238,33 @@ class BufferCore:
             )
         try:
             tx, ty, tz = translation
-            qx, qy, qz, qw = rotation
             tx = float(tx)
             ty = float(ty)
             tz = float(tz)
-            rx, ry, rz, rw = _canonical_quat((float(qx), float(qy), float(qz), float(qw)))
+            rx, ry, rz, rw = _canonical_quat(rotation)  # type: ignore[arg-type]
             stamp_ns = int(stamp_ns)
         except (TypeError, ValueError) as error:
             raise TypeError(
                 'set_transform needs translation (x, y, z), rotation (x, y, z, w) as numbers '
                 f'and an integer stamp_ns: {error}'
             ) from error
-        if parent[:1] == '/':
+        # Share one object for exact zeros (planar robots store many): saves memory per sample.
+        if tx == 0.0:
+            tx = 0.0
+        if ty == 0.0:
+            ty = 0.0
+        if tz == 0.0:
+            tz = 0.0
+        if rx == 0.0:
+            rx = 0.0
+        if ry == 0.0:
+            ry = 0.0
+        if rz == 0.0:
+            rz = 0.0
+        if parent and parent[0] == '/':
             parent = parent[1:]
-        if child[:1] == '/':
+        if child and child[0] == '/':
             child = child[1:]
-
         total = tx + ty + tz + rx + ry + rz + rw  # NaN if any value is NaN (or inf - inf)
         if (
             child == parent or not child or not parent or total != total  # noqa: PLR0124

@@ -154,7 +154,7 @@ class TimeCache:
             if stamps[start] < oldest_kept:
                 start = self._start = bisect_left(stamps, oldest_kept, start, end)
                 self._version += 1
-                if start > 32 and 2 * start > end:
+                if start > 32 and 4 * start > end:
                     del stamps[:start]
                     del self._samples[:start]
                     end -= start
