@@ -446,6 +446,10 @@ def test_invalid_joint_states_are_warned_about_and_dropped(spawn: Any, world: Wo
     wait_until(lambda: len(received) == 1, what='the valid message on /tf')
     [transform] = received[0].transforms
     assert (transform.header.stamp.sec, transform.child_frame_id) == (2002, 'frame_2')
+    # names that are no moving joint are ignored silently, but the message is still answered
+    publisher.publish(joint_state(['nobody', 'world_to_frame_1'], [1.0, 2.0], 2003 * SECOND))
+    wait_until(lambda: len(received) == 2, what='the empty /tf message')
+    assert list(received[1].transforms) == []
     assert rsp.process.poll() is None
 
 
