@@ -150,9 +150,15 @@ class _TfLayouts:
     def __init__(self, endian: _codegen.Endian) -> None:
         self.count = Struct(endian + 'I').unpack_from
         self.header = Struct(endian + 'iII').unpack_from
-        # parent characters, NUL, padding, child length; then child characters, NUL, padding, pose
+        # parent characters, NUL, padding, child length
         self.parent = _codegen.DynamicStructs(endian, [('I', 4, 4)], decode=True)
-        self.child = _codegen.DynamicStructs(endian, [('7d', 8, 56)], decode=True)
+        # child characters, NUL, padding, pose; for all but the last transform also the next
+        # transform's stamp and frame_id length (one unpack fewer per transform)
+        pose = ('7d', 8, 56)
+        self.last_child = _codegen.DynamicStructs(endian, [pose], decode=True)
+        self.child = _codegen.DynamicStructs(
+            endian, [pose, ('i', 4, 4), ('I', 4, 4), ('I', 4, 4)], decode=True
+        )
 
 
 _TF_LAYOUTS = (_TfLayouts('>'), _TfLayouts('<'))
@@ -161,38 +167,36 @@ _TF_LAYOUTS = (_TfLayouts('>'), _TfLayouts('<'))
 def _tf_transforms(buf: bytes) -> list[TransformTuple]:
     """Decode the transforms of a TFMessage straight into tuples (fast path)."""
     layouts = _TF_LAYOUTS[buf[1]]
-    unpack_header = layouts.header
     parent_cache, make_parent = layouts.parent.cache, layouts.parent.make
     child_cache, make_child = layouts.child.cache, layouts.child.make
     (count,) = layouts.count(buf, 4)
     if count * _MIN_TRANSFORM_SIZE > len(buf) - 8:
         raise _codegen.Malformed
-    pos = 8
+    if not count:
+        return []
+    sec, nanosec, length = layouts.header(buf, 8)
+    pos = 20
     result: list[TransformTuple] = []
     append = result.append
-    for _ in range(count):
-        pos += (4 - pos) & 3
-        sec, nanosec, length = unpack_header(buf, pos)
-        pos += 12
+    last = count - 1
+    for index in range(count):
         unpack, size = parent_cache.get(length << 3 | pos & 7) or make_parent(length, pos)
-        parent, nul, length = unpack(buf, pos)
+        parent, parent_nul, length = unpack(buf, pos)
         pos += size
-        if nul:
-            raise _codegen.Malformed
-        unpack, size = child_cache.get(length << 3 | pos & 7) or make_child(length, pos)
-        child, nul, tx, ty, tz, qx, qy, qz, qw = unpack(buf, pos)
-        pos += size
-        if nul:
-            raise _codegen.Malformed
-        append(
-            (
-                parent.decode(),
-                child.decode(),
-                sec * 1_000_000_000 + nanosec,
-                (tx, ty, tz),
-                (qx, qy, qz, qw),
+        stamp_ns = sec * 1_000_000_000 + nanosec
+        if index != last:
+            unpack, size = child_cache.get(length << 3 | pos & 7) or make_child(length, pos)
+            child, nul, tx, ty, tz, qx, qy, qz, qw, sec, nanosec, length = unpack(buf, pos)
+        else:
+            last_child = layouts.last_child
+            unpack, size = last_child.cache.get(length << 3 | pos & 7) or last_child.make(
+                length, pos
             )
-        )
+            child, nul, tx, ty, tz, qx, qy, qz, qw = unpack(buf, pos)
+        pos += size
+        if nul or parent_nul:
+            raise _codegen.Malformed
+        append((parent.decode(), child.decode(), stamp_ns, (tx, ty, tz), (qx, qy, qz, qw)))
     return result
 
 
