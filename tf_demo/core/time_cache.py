@@ -118,6 +118,7 @@ class TimeCache:
         '_start',
         '_version',
         'child_id',
+        'latest',
     )
 
     def __init__(self, max_storage_ns: int = DEFAULT_CACHE_TIME_NS, child_id: int = 0) -> None:
@@ -127,6 +128,8 @@ class TimeCache:
         self._samples: list[Sample] = []
         self._start = 0
         self._version = 0
+        #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
+        self.latest: tuple[int, int] = (0, 0)
         self._arrays: (
             tuple[int, npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int64]]
             | None
@@ -174,6 +177,7 @@ class TimeCache:
         if position == end:
             stamps.append(stamp_ns)
             self._samples.append(sample)
+            self.latest = (stamp_ns, sample[7])
         else:
             stamps.insert(position, stamp_ns)
             self._samples.insert(position, sample)
@@ -185,6 +189,7 @@ class TimeCache:
         self._samples = []
         self._start = 0
         self._version += 1
+        self.latest = (0, 0)
 
     # --- queries -------------------------------------------------------------------------
 
@@ -305,10 +310,7 @@ class TimeCache:
 
     def latest_time_and_parent(self) -> tuple[int, int]:
         """Return ``(newest stamp, its parent id)``, or ``(0, 0)`` when empty."""
-        end = len(self._stamps)
-        if self._start == end:
-            return 0, 0
-        return self._stamps[end - 1], self._samples[end - 1][7]
+        return self.latest
 
     @property
     def latest_stamp_ns(self) -> int:
@@ -364,16 +366,19 @@ class StaticCache:
 
     is_static = True
 
-    __slots__ = ('_sample', 'child_id')
+    __slots__ = ('_sample', 'child_id', 'latest')
 
     def __init__(self, child_id: int = 0) -> None:
         self.child_id = child_id
         self._sample: Sample = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0)
+        #: ``(0, parent id)``: static links impose no time constraint.
+        self.latest: tuple[int, int] = (0, 0)
 
     def insert(self, stamp_ns: int, sample: Sample) -> bool:
         """Overwrite the stored sample (the stamp is ignored); always succeeds."""
         del stamp_ns
         self._sample = sample
+        self.latest = (0, sample[7])
         return True
 
     def clear(self) -> None:
@@ -396,7 +401,7 @@ class StaticCache:
 
     def latest_time_and_parent(self) -> tuple[int, int]:
         """Return ``(0, parent)``: static links impose no time constraint."""
-        return 0, self._sample[7]
+        return self.latest
 
     @property
     def latest_stamp_ns(self) -> int:
