@@ -159,6 +159,8 @@ def _run_op(core: BufferCore, op: list[Any]) -> Result | None:
         return None
     if kind == 'string':
         return {'text': core.all_frames_as_string()}
+    if kind == 'yaml':
+        return {'text': core.all_frames_as_yaml()}
     if kind == 'frames':
         return {'frames': core.frame_ids()}
     try:
@@ -342,7 +344,37 @@ def compare(op: list[Any], ours: Result | None, theirs: Result | None) -> str | 
     if kind == 'can_full':
         # Only the answer: Noetic drops the first half's message (it passes no error_msg).
         return None if ours['ok'] == theirs['ok'] else f'expected {theirs["ok"]}, got {ours["ok"]}'
+    if kind == 'yaml':
+        return compare_yaml(ours['text'], theirs['text'])
     return None if ours == theirs else f'expected {theirs}, got {ours}'
+
+
+def compare_yaml(ours: str, theirs: str) -> str | None:
+    """
+    Compare ``all_frames_as_yaml`` texts line by line.
+
+    ROS 1 difference (verified against the oracle; spec §3.8 gives Jazzy's format): Noetic prints
+    ``most_recent_transform`` and ``oldest_transform`` with ``%.3f``, Jazzy with ``%.6f``; those
+    two values must agree to the oracle's three decimals, every other line exactly.
+    """
+    if theirs == '{}':
+        # ROS 1 difference (observed with the oracle): Noetic's tf2_py answers '{}' for a buffer
+        # without frames; Jazzy's allFramesAsYAML writes '[]' (spec §3.8, ros2/geometry2).
+        theirs = '[]'
+    our_lines, their_lines = ours.split('\n'), theirs.split('\n')
+    if len(our_lines) != len(their_lines):
+        return f'expected YAML {theirs!r}, got {ours!r}'
+    for mine, other in zip(our_lines, their_lines, strict=True):
+        key, _, value = other.partition(': ')
+        if key in ('  most_recent_transform', '  oldest_transform'):
+            my_key, _, my_value = mine.partition(': ')
+            if my_key != key or not re.fullmatch(r'-?\d+\.\d{6}', my_value):
+                return f'expected a %.6f line for {key.strip()}, got {mine!r}'
+            if abs(float(my_value) - float(value)) > 0.0005 + 1e-9:
+                return f'expected {other!r} (to 3 decimals), got {mine!r}'
+        elif mine != other:
+            return f'expected YAML line {other!r}, got {mine!r}'
+    return None
 
 
 def find_discrepancies(

@@ -36,8 +36,9 @@ A scenario is ``{"cache_time_ns": int, "ops": [op, ...]}``; the operations are:
     result ``{"stamp": ns}`` or an exception object.
 ``["chain", target, target_time_ns, source, source_time_ns, fixed]``
     result ``{"frames": [...]}`` or an exception object.
-``["string"]`` and ``["frames"]``
-    ``{"text": all_frames_as_string()}`` and ``{"frames": every frame name in id order}``.
+``["string"]``, ``["yaml"]`` and ``["frames"]``
+    ``{"text": all_frames_as_string()}``, ``{"text": all_frames_as_yaml()}`` and
+    ``{"frames": every frame name in id order}``.
 ``["time_lookups", target, source, [time_ns, ...]]``
     one simple lookup per stamp, timed; result ``{"seconds": total wall time}`` (benchmarks).
 
@@ -112,6 +113,8 @@ def _run_op(buffer, op):
         return {'ok': bool(ok), 'msg': msg}
     if kind == 'string':
         return {'text': buffer.all_frames_as_string()}
+    if kind == 'yaml':
+        return {'text': buffer.all_frames_as_yaml()}
     if kind == 'frames':
         return {'frames': list(buffer._getFrameStrings())}
     if kind == 'time_lookups':

@@ -272,7 +272,7 @@ def build_scenario(choose: Chooser) -> Scenario:
       empty names); a short cache time so that old data is rejected and pruned; ``clear()``;
     * queries at time 0, at exact sample stamps, between samples, outside the data, for unknown,
       empty and ``/``-prefixed names, fixed-frame lookups, ``can_transform``, latest common time,
-      and ``all_frames_as_string``.  No frame-chain queries: Noetic's ``_chainAsVector`` is an
+      ``all_frames_as_string`` and ``all_frames_as_yaml``.  No frame-chain queries: Noetic's ``_chainAsVector`` is an
       older algorithm than Jazzy's (``spec/tf2.md`` §3.8 lists Jazzy's verified chains).
     """
     step = _pick(choose, [1, 1000, 100_000_000, 1_000_000_000, 123_456_789])
@@ -415,7 +415,9 @@ def build_scenario(choose: Chooser) -> Scenario:
             return ['can_full', target, time_ns, source, _pick(choose, query_times), query_frame()]
         if roll < 93:
             return ['lct', target, source]
-        return ['string']
+        if roll < 96:
+            return ['string']
+        return ['yaml']
 
     ops: list[Op] = list(inserts)
     if _chance(choose, 25):
