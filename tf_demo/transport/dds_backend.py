@@ -53,6 +53,7 @@ __all__ = [
     'DdsNode',
     'DdsPublisher',
     'DdsSubscription',
+    'DdsTask',
     'DdsTimer',
     'InvalidNameError',
     'MultiThreadedExecutor',
@@ -67,6 +68,7 @@ __all__ = [
     'shutdown',
     'spin',
     'spin_once',
+    'spin_until_future_complete',
     'validate_namespace',
     'validate_node_name',
 ]
@@ -991,7 +993,88 @@ def create_node(node_name: str, **kwargs: Any) -> DdsNode:
 # Executors
 # --------------------------------------------------------------------------------------------
 
+
+class DdsTask:
+    """
+    A coroutine (or plain callable) run by a DDS executor: rclpy's ``Task`` subset.
+
+    The executor steps the coroutine with ``send(None)`` when it starts and again on every
+    spin until it returns; awaiting a future that yields until done (rclpy's and
+    ``tf_demo.ros.Future``'s protocol) therefore works.
+    """
+
+    def __init__(self, handler: Any, args: Sequence[Any] = ()) -> None:
+        self._handler = handler
+        self._args = tuple(args)
+        self._coroutine: Any = handler if inspect.iscoroutine(handler) else None
+        self._done = False
+        self._cancelled = False
+        self._result: Any = None
+        self._exception: BaseException | None = None
+        self._done_callbacks: list[Callable[[DdsTask], Any]] = []
+
+    def done(self) -> bool:
+        """Return whether the task finished (returned, raised or was cancelled)."""
+        return self._done
+
+    def cancelled(self) -> bool:
+        """Return whether the task was cancelled."""
+        return self._cancelled
+
+    def cancel(self) -> None:
+        """Stop stepping the task."""
+        if not self._done:
+            self._cancelled = True
+            if self._coroutine is not None:
+                self._coroutine.close()
+            self._finish()
+
+    def result(self) -> Any:
+        """Return the task's result; re-raise its exception if it failed."""
+        if self._exception is not None:
+            raise self._exception
+        return self._result
+
+    def exception(self) -> BaseException | None:
+        """Return the exception the task raised, if any."""
+        return self._exception
+
+    def add_done_callback(self, callback: Callable[[DdsTask], Any]) -> None:
+        """Call ``callback(task)`` when the task finishes (at once if it already has)."""
+        if self._done:
+            callback(self)
+        else:
+            self._done_callbacks.append(callback)
+
+    def step(self) -> None:
+        """Run the task until its next suspension point (or to the end)."""
+        if self._done:
+            return
+        try:
+            if self._coroutine is None:
+                outcome = self._handler(*self._args)
+                if not inspect.iscoroutine(outcome):
+                    self._result = outcome
+                    self._finish()
+                    return
+                self._coroutine = outcome
+            self._coroutine.send(None)
+        except StopIteration as stop:
+            self._result = stop.value
+            self._finish()
+        except Exception as error:  # kept for result(); the executor re-raises it
+            self._exception = error
+            self._finish()
+
+    def _finish(self) -> None:
+        self._done = True
+        callbacks, self._done_callbacks = self._done_callbacks, []
+        for callback in callbacks:
+            callback(self)
+
+
 _IDLE_WAIT_NS = 200_000_000
+_TASK_POLL_NS = 5_000_000
 _SIM_TIME_MAX_WAIT_NS = 10_000_000
 
 
@@ -1013,6 +1096,8 @@ class DdsExecutor:
         self._waitset = dds_wire.WaitSet(self._waitset_participant)
         self._attached: dict[int, DdsSubscription] = {}
         self._shutdown = False
+        self._tasks: list[DdsTask] = []
+        self._tasks_lock = threading.Lock()
         with _context.lock:
             _context.executors.add(self)
 
@@ -1086,10 +1171,44 @@ class DdsExecutor:
             self._run_callback(timer.callback)
         return ran
 
-    @staticmethod
-    def _run_callback(callback: Callable[..., Any], *args: Any) -> None:
-        # As in rclpy, an exception raised by user code propagates out of spin().
-        callback(*args)
+    def _run_callback(self, callback: Callable[..., Any], *args: Any) -> None:
+        # As in rclpy, an exception raised by user code propagates out of spin(), and an
+        # ``async def`` callback becomes a task that is resumed on later spins.
+        outcome = callback(*args)
+        if inspect.iscoroutine(outcome):
+            task = DdsTask(outcome)
+            with self._tasks_lock:
+                self._tasks.append(task)
+            self._step_task(task)
+
+    def create_task(self, callback: Any, *args: Any) -> DdsTask:
+        """Run a coroutine (or ``callback(*args)``) in this executor; returns its task."""
+        task = DdsTask(callback, args)
+        with self._tasks_lock:
+            self._tasks.append(task)
+        self.wake()
+        return task
+
+    def _step_task(self, task: DdsTask) -> bool:
+        task.step()
+        if not task.done():
+            return False
+        with self._tasks_lock:
+            if task in self._tasks:
+                self._tasks.remove(task)
+        error = task.exception()
+        if error is not None:
+            raise error
+        return True
+
+    def _resume_tasks(self) -> bool:
+        """Step every pending task once; return whether any finished."""
+        with self._tasks_lock:
+            pending = list(self._tasks)
+        finished = False
+        for task in pending:
+            finished = self._step_task(task) or finished
+        return finished
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         """
@@ -1103,10 +1222,14 @@ class DdsExecutor:
         deadline = None if timeout_sec is None else time.monotonic() + max(0.0, timeout_sec)
         while True:
             conditions = self._refresh_conditions()
-            if self._run_ready_timers():
+            tasks_finished = self._resume_tasks()
+            if self._run_ready_timers() or tasks_finished:
                 return
             remaining = None if deadline is None else deadline - time.monotonic()
             wait_ns = self._wait_timeout_ns(remaining)
+            if self._tasks:
+                # A pending task may be waiting for something another thread completes.
+                wait_ns = min(wait_ns, _TASK_POLL_NS)
             triggered = self._waitset.wait(wait_ns)
             if not _context.ok() or self._shutdown:
                 return
@@ -1190,6 +1313,20 @@ def spin_once(
     chosen = _executor_for(node, executor)
     try:
         chosen.spin_once(timeout_sec)
+    finally:
+        chosen.remove_node(node)
+
+
+def spin_until_future_complete(
+    node: DdsNode,
+    future: Any,
+    executor: DdsExecutor | None = None,
+    timeout_sec: float | None = None,
+) -> None:
+    """Run the callbacks of ``node`` until ``future.done()`` or the timeout."""
+    chosen = _executor_for(node, executor)
+    try:
+        chosen.spin_until_future_complete(future, timeout_sec)
     finally:
         chosen.remove_node(node)
 
