@@ -178,8 +178,7 @@ def test_wait_in_the_only_feeder_thread_returns_at_once() -> None:
     buffer = Buffer(clock=clock)
 
     def feeder_waits() -> object:
-        for _ in range(3):
-            buffer.note_feeder_thread()
+        buffer.note_feeder_thread()
         return buffer.can_transform('a', 'b', 0, Duration(seconds=1000))
 
     thread, box = in_thread(feeder_waits)
@@ -343,3 +342,22 @@ def test_extrapolation_subclasses_are_exposed() -> None:
         buffer.lookup_transform('a', 'b', 5 * S)
     with pytest.raises(ExtrapolationException, match='extrapolation into the past'):
         buffer.lookup_transform('a', 'b', 1 * S)
+
+
+def test_thread_pool_workers_keep_blocking_waits() -> None:
+    """In a MultiThreadedExecutor worker another worker may deliver: the wait blocks for data."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    buffer = Buffer()
+    started = threading.Event()
+
+    def worker_waits() -> bool:
+        buffer.note_feeder_thread()
+        started.set()
+        return bool(buffer.can_transform('a', 'b', 0, Duration(seconds=HANG_GUARD_S * 3)))
+
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        future = pool.submit(worker_waits)
+        assert started.wait(HANG_GUARD_S)
+        buffer.set_transform(transform_msg('a', 'b', S), 'x')
+        assert future.result(timeout=HANG_GUARD_S) is True

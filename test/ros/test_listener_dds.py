@@ -273,3 +273,47 @@ def test_clock_jumping_back_over_dds_clears_the_buffer(ros: None) -> None:
         assert buffer.can_transform('a', 's', 0)
     finally:
         spinner.stop()
+
+
+def test_blocking_wait_in_a_single_threaded_executor_callback_does_not_deadlock(
+    ros: None,
+) -> None:
+    """A timer that waits 1000 s for a missing frame, in the thread delivering /tf, returns."""
+    publisher = transport.create_node('steady_pub')
+    broadcaster = TransformBroadcaster(publisher)
+    publisher.create_timer(
+        0.05,
+        lambda: broadcaster.send_transform(
+            make_transform_stamped('a', 'b', time.time_ns(), (1, 0, 0), (0, 0, 0, 1))
+        ),
+    )
+    publisher_spinner = Spinner(publisher)
+    node = transport.create_node('single_threaded_user')
+    buffer = Buffer(node=node)
+    listener = TransformListener(buffer, node)
+    outcome: list[bool] = []
+
+    def on_timer() -> None:
+        if outcome or not buffer.can_transform('a', 'b', 0):
+            return
+        answer = buffer.can_transform('a', 'missing', 0, Duration(seconds=1000))
+        outcome.append(bool(answer))
+
+    node.create_timer(0.05, on_timer)
+    executor = transport.SingleThreadedExecutor()
+    executor.add_node(node)
+
+    def spin_until_answered() -> None:
+        deadline = time.monotonic() + DISCOVERY_TIMEOUT_S * 2
+        while not outcome and time.monotonic() < deadline:
+            executor.spin_once(timeout_sec=0.05)
+
+    user_thread = threading.Thread(target=spin_until_answered, daemon=True)
+    user_thread.start()
+    try:
+        user_thread.join(DISCOVERY_TIMEOUT_S * 3)
+        assert not user_thread.is_alive(), 'the executor thread is stuck in the wait'
+        assert outcome == [False]
+    finally:
+        publisher_spinner.stop()
+        listener.unregister()

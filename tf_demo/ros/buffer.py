@@ -28,13 +28,15 @@ out).
 thread fills the buffer. The buffer knows which threads deliver data to it (the listener reports
 the thread of every ``/tf`` message) and whether a dedicated thread does (``TransformListener(
 ..., spin_thread=True)`` or :meth:`Buffer.set_using_dedicated_thread`). When the waiting thread is
-the only thread that has delivered data (three messages or more, so that a thread pool has had a
-chance to show its other threads) and there is no dedicated thread, data cannot arrive
+the only thread that has delivered data, is not a worker of a thread pool (rclpy's
+``MultiThreadedExecutor``), and there is no dedicated thread, data cannot arrive
 while it waits (it would be delivered by this very thread after the callback returns), so the
 wait does not block: it returns at once with the current answer (``False``, or the core's
 exception for ``lookup_transform``) and logs C++ tf2's "dedicated thread" warning once. Use
 ``spin_thread=True``, a ``MultiThreadedExecutor``, or the awaitable API
 (``await buffer.lookup_transform_async(..., timeout=...)`` from an ``async`` callback) instead.
+Limitation: before the first ``/tf`` message has been delivered the buffer cannot know who will
+deliver it, so such a wait still runs to its timeout, as upstream's does.
 
 **Awaitable waits with a timeout.** ``wait_for_transform_async``,
 ``wait_for_transform_full_async``, ``lookup_transform_async`` and ``lookup_transform_full_async``
@@ -76,8 +78,8 @@ from tf_demo.ros.geometry import TransformFunction
 DEFAULT_CACHE_TIME_NS = 10_000_000_000
 JUMP_BACK_CLEAR_THRESHOLD_NS = 1_000_000_000
 """A backward jump of at least this much clears the buffer (tf2_ros Python's threshold)."""
-SOLE_FEEDER_EVIDENCE = 3
-"""Deliveries all from one thread before a wait in that thread is known to be hopeless."""
+POOL_THREAD_PREFIX = 'ThreadPoolExecutor'
+"""Name prefix of ``concurrent.futures`` worker threads (rclpy's MultiThreadedExecutor)."""
 MAX_WAIT_SLICE_S = 1.0
 """Longest single condition wait; bounds how late a deadline on a silent clock is noticed."""
 
@@ -189,7 +191,7 @@ class Buffer(BufferCore):
         self._async_waits: list[_AsyncWait] = []
         self._watcher: threading.Thread | None = None
         self._dedicated_thread = False
-        self._feeder_deliveries: dict[int, int] = {}
+        self._feeder_threads: set[int] = set()
         self._warned_no_dedicated_thread = False
         self._extra_transforms: dict[str, TransformFunction] = {}
         if clock is None:
@@ -262,10 +264,9 @@ class Buffer(BufferCore):
     def note_feeder_thread(self) -> None:
         """Record that the calling thread delivers transforms (called by the listener)."""
         ident = threading.get_ident()
-        count = self._feeder_deliveries.get(ident, 0)
-        if count < SOLE_FEEDER_EVIDENCE:
+        if ident not in self._feeder_threads:
             with self._condition:
-                self._feeder_deliveries[ident] = count + 1
+                self._feeder_threads.add(ident)
 
     def set_using_dedicated_thread(self, value: bool) -> None:
         """Declare that a thread other than the callers' fills this buffer (C++'s name)."""
@@ -276,10 +277,12 @@ class Buffer(BufferCore):
     def _data_can_arrive_while_waiting(self) -> bool:
         if self._dedicated_thread:
             return True
+        current = threading.current_thread()
+        if current.name.startswith(POOL_THREAD_PREFIX):
+            return True  # a multi-threaded executor: another worker can deliver meanwhile
         with self._condition:
-            deliveries = dict(self._feeder_deliveries)
-        sole_feeder = set(deliveries) == {threading.get_ident()}
-        return not (sole_feeder and max(deliveries.values()) >= SOLE_FEEDER_EVIDENCE)
+            feeders = set(self._feeder_threads)
+        return feeders != {current.ident}
 
     def _wait_until(self, ready: Callable[[], bool], timeout_ns: int) -> None:
         """Block until ``ready()`` or until ``timeout_ns`` passed on the buffer's clock."""
