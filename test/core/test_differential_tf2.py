@@ -465,15 +465,25 @@ def test_lookup_transforms_batch_equals_tf2_single_lookups(oracle: Oracle, seed:
     assert isinstance(ops, list)
     inserts = [op for op in ops if op[0] in ('set', 'clear')]
     stamps = sorted({int(op[3]) for op in inserts if op[0] == 'set'})
-    frames = sorted(
-        {str(op[n]).removeprefix('/') for op in inserts if op[0] == 'set' for n in (1, 2)}
-    )
-    frames = [f for f in frames if f]
-    target, source = rng.choice(frames), rng.choice(frames)
+    links = [
+        (str(op[1]).removeprefix('/'), str(op[2]).removeprefix('/'), int(op[3]))
+        for op in inserts
+        if op[0] == 'set' and op[6] != 'bad'
+    ]
+    frames = sorted({name for parent, child, _ in links for name in (parent, child)})
+    if rng.random() < 0.75:  # mostly a real link (or its inverse): many lookups succeed
+        target, source, _ = rng.choice(links)
+        if rng.random() < 0.5:
+            target, source = source, target
+    else:
+        target, source = rng.sample(frames, 2)
+    stamps = sorted({stamp for _, _, stamp in links})
     low, high = stamps[0], stamps[-1] + 1
-    times = sorted(rng.randint(low, high) for _ in range(rng.choice([1, 5, 50])))
+    times = [rng.randint(low, high) for _ in range(rng.choice([1, 5, 50]))]
     if rng.random() < 0.3:
         times = [rng.choice(stamps) for _ in times]
+    if rng.random() < 0.7:
+        times.sort()
     queries = [['lookup', target, source, t] for t in times]
     theirs = oracle.run([{'cache_time_ns': scenario['cache_time_ns'], 'ops': inserts + queries}])[
         0
