@@ -595,6 +595,9 @@ class BufferCore:
                 self._walk_error(failed_cache, time_ns, source_id, target_id)
             raise ConnectivityException(self._connectivity_text(source_id, target_id))
 
+        if first:
+            # The target is the top itself: the inverse of an identity changes nothing.
+            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
         # Full path: (top_T_target)^-1 * top_T_source.
         iq = (-tqx, -tqy, -tqz, tqw)
         ix, iy, iz = math3d.rotate_vector(iq, (-tx, -ty, -tz))
@@ -692,7 +695,7 @@ class BufferCore:
         # ROS 2 stores the result in a tf2::Transform (a matrix) and reads the quaternion back.
         if q is _IDENTITY_Q:
             return TransformResult(translation, q, stamp)
-        rotation = math3d.quat_from_matrix(math3d.matrix_from_quat(q))
+        rotation = _canonical_quat(q)
         return TransformResult(translation, rotation, stamp)
 
     def lookup_transform_full(
