@@ -25,6 +25,7 @@ from typing import Any
 import pytest
 from tf_demo import transport
 from tf_demo.core.exceptions import LookupException
+from tf_demo.core.exceptions import TimeoutException
 from tf_demo.ros import Buffer
 from tf_demo.ros import StaticTransformBroadcaster
 from tf_demo.ros import TransformBroadcaster
@@ -316,4 +317,43 @@ def test_blocking_wait_in_a_single_threaded_executor_callback_does_not_deadlock(
         assert outcome == [False]
     finally:
         publisher_spinner.stop()
+        listener.unregister()
+
+
+def test_awaited_lookup_in_a_single_threaded_executor_resolves_and_times_out(
+    ros: None,
+) -> None:
+    """An async timer awaits a transform its own executor delivers; a missing one times out."""
+    node = transport.create_node('async_user')
+    buffer = Buffer(node=node)
+    listener = TransformListener(buffer, node)
+    results: dict[str, Any] = {}
+
+    async def on_timer() -> None:
+        if results.get('started'):
+            return
+        results['started'] = True
+        results['found'] = await buffer.lookup_transform_async(
+            'a', 'b', 0, timeout=Duration(seconds=DISCOVERY_TIMEOUT_S)
+        )
+        try:
+            await buffer.lookup_transform_async('a', 'missing', 0, timeout=Duration(seconds=0.5))
+        except TimeoutException as error:
+            results['timeout'] = error
+
+    node.create_timer(0.05, on_timer)
+    executor = transport.SingleThreadedExecutor()
+    executor.add_node(node)
+    publisher = transport.create_node('late_pub')
+    broadcaster = StaticTransformBroadcaster(publisher)
+    deadline = time.monotonic() + DISCOVERY_TIMEOUT_S * 2
+    try:
+        while 'started' not in results and time.monotonic() < deadline:
+            executor.spin_once(timeout_sec=0.05)
+        broadcaster.send_transform(make_transform_stamped('a', 'b', 0, (3, 0, 0), (0, 0, 0, 1)))
+        while 'timeout' not in results and time.monotonic() < deadline:
+            executor.spin_once(timeout_sec=0.05)
+        assert translation(results['found']) == (3.0, 0.0, 0.0)
+        assert isinstance(results['timeout'], TimeoutException)
+    finally:
         listener.unregister()
