@@ -128,7 +128,17 @@ def test_scenarios_cover_every_operation_and_edge_case() -> None:
             if op[0] == 'lookup':
                 seen['unknown'] |= 'unknown' in (op[1], op[2])
                 seen['zero'] |= op[3] == 0
-    assert kinds == {'set', 'clear', 'lookup', 'lookup_full', 'can', 'can_full', 'lct', 'string'}
+    assert kinds == {
+        'set',
+        'clear',
+        'lookup',
+        'lookup_full',
+        'can',
+        'can_full',
+        'lct',
+        'string',
+        'yaml',
+    }
     assert all(seen.values()), seen
 
 

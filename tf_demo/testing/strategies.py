@@ -263,24 +263,28 @@ def build_scenario(choose: Chooser) -> Scenario:
     What is generated, and what is deliberately avoided because Debian's ROS 1 oracle differs
     from Jazzy (``spec/tf2.md`` Appendix):
 
-    * two to eight frames in one or several trees; a link is static or dynamic for the whole
-      scenario (the oracle never switches a cache's kind, Jazzy does);
-    * dynamic links get one to five samples on a stamp grid (distinct stamps per link: the oracle
-      drops a second sample with the same stamp), sometimes stamp 0, sometimes a new parent from
-      some stamp on (re-parenting, possibly a loop); inserts are shuffled (out of order), some are
-      repeated exactly, some are written with a leading ``/``; invalid inserts (self transform,
-      empty names); a short cache time so that old data is rejected and pruned; ``clear()``;
+    * two to eight (sometimes twenty) frames in one or several trees; a link is static or
+      dynamic for the whole scenario (the oracle never switches a cache's kind, Jazzy does);
+    * static links are sometimes overwritten, also with a new parent; dynamic links get one to
+      five (sometimes up to twenty-one) samples on a stamp grid (distinct stamps per link: the
+      oracle drops a second sample with the same stamp), sometimes stamp 0, sometimes a new
+      parent from some stamp on (re-parenting, possibly a loop); inserts are shuffled (out of
+      order), some are repeated exactly, some are written with a leading ``/``; invalid inserts
+      (self transform, empty names); a short cache time so that old data is rejected and
+      pruned; ``clear()``;
     * queries at time 0, at exact sample stamps, between samples, outside the data, for unknown,
       empty and ``/``-prefixed names, fixed-frame lookups, ``can_transform``, latest common time,
-      ``all_frames_as_string`` and ``all_frames_as_yaml``.  No frame-chain queries: Noetic's ``_chainAsVector`` is an
-      older algorithm than Jazzy's (``spec/tf2.md`` §3.8 lists Jazzy's verified chains).
+      ``all_frames_as_string`` and ``all_frames_as_yaml``.  No frame-chain queries: Noetic's
+      ``_chainAsVector`` is an older algorithm than Jazzy's (``spec/tf2.md`` §3.8 lists Jazzy's
+      verified chains).
     """
     step = _pick(choose, [1, 1000, 100_000_000, 1_000_000_000, 123_456_789])
     # Stamps stay below 1e6 s: the oracle's Python binding passes times to C++ as double seconds
     # (``rospy.Time.to_sec``), which keeps every nanosecond only for small epochs.
     base = _pick(choose, [0, 0, 1_000_000_000_000, 123_456_789_000_000])
     cache_time_ns = _pick(choose, [10_000_000_000, 10_000_000_000, 3 * step, 6 * step])
-    names = _shuffled(choose, _NAME_POOL)[: choose.integer(2, 8)]
+    frame_count = choose.integer(2, 20) if _chance(choose, 10) else choose.integer(2, 8)
+    names = _shuffled(choose, _NAME_POOL)[:frame_count]
     parents = [-1] + [
         -1 if _chance(choose, 12) else choose.integer(0, index - 1)
         for index in range(1, len(names))
@@ -295,8 +299,10 @@ def build_scenario(choose: Chooser) -> Scenario:
         authority = _pick(choose, ['auth_a', 'auth_b'])
         special_set = choose.integer(0, 1)
         if _chance(choose, 30):
-            for _ in range(choose.integer(1, 2)):
+            for repeat in range(choose.integer(1, 2)):
                 stamp = base + step * choose.integer(0, 20)
+                if repeat and _chance(choose, 30):  # a static overwrite with a new parent
+                    parent = _pick(choose, [n for n in names if n != child])
                 inserts.append(
                     [
                         'set',
@@ -310,7 +316,8 @@ def build_scenario(choose: Chooser) -> Scenario:
                     ]
                 )
             continue
-        grid = sorted({choose.integer(0, 20) for _ in range(choose.integer(1, 5))})
+        sample_count = choose.integer(6, 21) if _chance(choose, 10) else choose.integer(1, 5)
+        grid = sorted({choose.integer(0, 20) for _ in range(sample_count)})
         new_parent_from = None
         if len(grid) >= 2 and _chance(choose, 15):
             new_parent_from = grid[choose.integer(1, len(grid) - 1)]
