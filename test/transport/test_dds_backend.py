@@ -389,3 +389,35 @@ def test_create_task_result_and_exceptions_propagate(world):
     node.create_publisher(std_msgs.String, 'boom', 1).publish(std_msgs.String(data='x'))
     with pytest.raises(ArithmeticError, match='callback failed'):
         spin_until(executor, lambda: False, timeout=5)
+
+
+@pytest.mark.dds
+def test_parameter_callbacks_validate_and_observe_changes(world):
+    """On-set callbacks can reject a value; pre-set may add parameters; post-set sees results."""
+    from tf_demo.transport.parameters import SetParametersResult
+
+    node = dds_backend.DdsNode('params')
+    node.declare_parameter('rate', 10.0)
+    node.declare_parameter('unit', 'Hz')
+    seen: list[list[str]] = []
+    node.add_on_set_parameters_callback(
+        lambda params: SetParametersResult(
+            successful=all(p.name != 'rate' or p.value > 0 for p in params), reason='rate <= 0'
+        )
+    )
+    node.add_pre_set_parameters_callback(
+        lambda params: (
+            [*params, Parameter('unit', value='kHz')]
+            if any(p.name == 'rate' for p in params)
+            else params
+        )
+    )
+    node.add_post_set_parameters_callback(lambda params: seen.append([p.name for p in params]))
+    (rejected,) = node.set_parameters([Parameter('rate', value=-1.0)])
+    assert not rejected.successful
+    assert rejected.reason == 'rate <= 0'
+    assert node.get_parameter('rate').value == 10.0
+    assert all(result.successful for result in node.set_parameters([Parameter('rate', value=2.0)]))
+    assert node.get_parameter('rate').value == 2.0
+    assert node.get_parameter('unit').value == 'kHz'
+    assert seen == [['rate', 'unit']]

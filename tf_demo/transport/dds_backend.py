@@ -772,6 +772,22 @@ class DdsNode:
         """Remove a callback registered with :meth:`add_on_set_parameters_callback`."""
         self._parameters.remove_on_set_parameters_callback(callback)
 
+    def add_pre_set_parameters_callback(self, callback: Callable[[list[Any]], Any]) -> None:
+        """Register a callback that may modify a parameter list before it is set."""
+        self._parameters.add_pre_set_parameters_callback(callback)
+
+    def remove_pre_set_parameters_callback(self, callback: Callable[[list[Any]], Any]) -> None:
+        """Remove a callback registered with :meth:`add_pre_set_parameters_callback`."""
+        self._parameters.remove_pre_set_parameters_callback(callback)
+
+    def add_post_set_parameters_callback(self, callback: Callable[[list[Any]], Any]) -> None:
+        """Register a callback told about parameters after they were set."""
+        self._parameters.add_post_set_parameters_callback(callback)
+
+    def remove_post_set_parameters_callback(self, callback: Callable[[list[Any]], Any]) -> None:
+        """Remove a callback registered with :meth:`add_post_set_parameters_callback`."""
+        self._parameters.remove_post_set_parameters_callback(callback)
+
     # -- entities --------------------------------------------------------------------------
 
     def _check_alive(self) -> None:
