@@ -238,3 +238,25 @@ def test_display_time_point():
     assert display_time_point(1_500_000_000) == '1.500000'
     assert display_time_point(1_700_000_000_123_456_789) == '1700000000.123457'
     assert math.isclose(float(display_time_point(-2_500_000_000)), -2.5)
+
+
+def test_interior_search_matches_linear_scan_on_irregular_stamps():
+    """The guessed-then-bisected search finds tf2's older neighbour for any spacing and ties."""
+    rng = random.Random(23)
+    for _ in range(30):
+        cache = TimeCache(10**12)
+        stamps = sorted(rng.choice((rng.randint(0, 10**6), rng.randint(0, 50))) for _ in range(40))
+        for order, stamp in enumerate(stamps):
+            cache.insert(stamp, _values(order, parent=1 + order % 3))
+        ascending = sorted((stamp, order) for order, stamp in enumerate(stamps))
+        for time_ns in (rng.randint(stamps[0] + 1, stamps[-1] - 1) for _ in range(50)):
+            if time_ns in stamps:
+                continue
+            older = max(order for stamp, order in ascending if stamp <= time_ns)
+            assert cache.get_parent(time_ns) == 1 + older % 3
+            sample = cache.get_data(time_ns)
+            newer = min((stamp, order) for stamp, order in ascending if stamp > time_ns)[1]
+            if 1 + older % 3 != 1 + newer % 3:
+                assert sample[0] == older
+            else:
+                assert min(older, newer) <= sample[0] <= max(older, newer)

@@ -105,6 +105,23 @@ def display_time_point(stamp_ns: int) -> str:
     return f'{duration_to_sec(stamp_ns):.6f}'
 
 
+def _older_index(  # noqa: PLR0917 (hot path: positional arguments are fastest)
+    stamps: array[int], time_ns: int, start: int, end: int, earliest: int, latest: int
+) -> int:
+    """
+    Return the last index in ``[start, end)`` whose stamp is <= ``time_ns`` (interior times).
+
+    Streams are usually evenly spaced, so a linear guess lands on the answer or next to it;
+    bisection only narrows what the guess missed.
+    """
+    guess = start + (time_ns - earliest) * (end - 1 - start) // (latest - earliest)
+    if stamps[guess] <= time_ns:
+        if stamps[guess + 1] > time_ns:
+            return guess
+        return bisect_right(stamps, time_ns, guess + 1, end) - 1
+    return bisect_right(stamps, time_ns, start, guess) - 1
+
+
 class TimeCache:
     """History of one dynamic link, with tf2's ordering, pruning and interpolation."""
 
@@ -216,7 +233,7 @@ class TimeCache:
         earliest = stamps[start]
         if time_ns <= earliest:
             return self._samples[start] if time_ns == earliest else None
-        index = bisect_right(stamps, time_ns, start, end) - 1
+        index = _older_index(stamps, time_ns, start, end, earliest, latest)
         samples = self._samples
         one = samples[index]
         two = samples[index + 1]
@@ -274,7 +291,7 @@ class TimeCache:
         earliest = stamps[start]
         if time_ns <= earliest:
             return self._samples[start][7] if time_ns == earliest else 0
-        return self._samples[bisect_right(stamps, time_ns, start, end) - 1][7]
+        return self._samples[_older_index(stamps, time_ns, start, end, earliest, latest)][7]
 
     def explain_failure(self, time_ns: int) -> tuple[int, str]:
         """
