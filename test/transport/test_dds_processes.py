@@ -252,3 +252,35 @@ def test_ros_discovery_info_names_the_node_and_its_endpoints(dds_env, peers, wir
     participant_gid = bytes(info.gid.data)
     assert writer_gid[:12] == participant_gid[:12]
     assert wire.count_endpoints('rt/probe', publications=True) == 1
+
+
+def test_deprecated_ros_localhost_only_still_connects_and_warns(dds_env, peers):
+    """ROS_LOCALHOST_ONLY=1 (range unset) selects the loopback config and logs rcl's warning."""
+    env = dict(dds_env, ROS_LOCALHOST_ONLY='1')
+    env.pop('ROS_AUTOMATIC_DISCOVERY_RANGE')
+    subscriber = start(peers, env, 'sub', '--count', '3')
+    subscriber.wait_for_line('ready')
+    publisher = start(peers, env, 'pub', '--count', '3', '--wait-subs', '1')
+    assert publisher.finish() == 0
+    assert subscriber.finish() == 0
+    assert subscriber.stdout[-1] == 'done 3'
+    assert any('ROS_LOCALHOST_ONLY is deprecated' in line for line in publisher.stderr)
+
+
+def test_user_cyclonedds_uri_is_applied_on_top_of_the_loopback_config(dds_env, peers):
+    """A user's CYCLONEDDS_URI domain tag separates processes: same tag talks, other tag not."""
+    tagged = (
+        '<CycloneDDS><Domain id="any"><Discovery><Tag>{}</Tag></Discovery></Domain></CycloneDDS>'
+    )
+    env_a = dict(dds_env, CYCLONEDDS_URI=tagged.format('team_a'))
+    env_b = dict(dds_env, CYCLONEDDS_URI=tagged.format('team_b'))
+    same = start(peers, env_a, 'sub', '--name', 'same', '--count', '3', '--timeout', '6')
+    other = start(peers, env_b, 'sub', '--name', 'other', '--count', '3', '--timeout', '6')
+    same.wait_for_line('ready')
+    other.wait_for_line('ready')
+    publisher = start(peers, env_a, 'pub', '--count', '3', '--wait-subs', '1')
+    assert publisher.finish() == 0
+    assert same.finish() == 0
+    assert other.finish() == 0
+    assert same.stdout[-1] == 'done 3'
+    assert other.stdout[-1] == 'done 0'
