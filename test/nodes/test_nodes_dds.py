@@ -295,12 +295,19 @@ def test_point_transformer_logs_the_point_in_map(spawn: Any, dds_env: dict[str, 
     assert line.endswith('is (1.000, 3.000, 0.000) in map')
 
 
-def test_tf_demo_live_prints_transforms_and_stops_its_children(spawn: Any) -> None:
-    """The README demo prints odom <- camera_link lines and exits 0 after --duration."""
-    live = spawn.start('tf_demo_live', '--duration', '20', '--quiet', '--rate', '4')
+def test_tf_demo_live_shows_listener_tf_echo_and_its_own_lines(spawn: Any) -> None:
+    """The README demo relays tf_listener and tf_echo, prints transforms, exits 0 after -d."""
+    live = spawn.start('tf_demo_live', '--duration', '20', '--rate', '4')
     out, err = live.communicate(timeout=STARTUP_TIMEOUT_S + 30)
     assert live.returncode == 0, err
-    lines = [line for line in out.splitlines() if line.startswith('odom <- camera_link @ ')]
-    assert lines, out
-    assert 'translation [' in lines[-1]
-    assert lines[-1].split('translation [')[1].split(']')[0].endswith('+0.200')
+    lines = out.splitlines()
+    own = [line for line in lines if line.startswith('odom <- camera_link @ ')]
+    assert own, out
+    assert own[-1].split('translation [')[1].split(']')[0].endswith('+0.200')
+    assert any(
+        line.startswith('[tf_listener] ') and 'Transform odom <- camera_link at ' in line
+        for line in lines
+    ), out
+    echo_start = next(i for i, line in enumerate(lines) if line.startswith('[tf_echo] At time '))
+    assert lines[echo_start + 1].startswith('[tf_echo] - Translation: [')
+    assert any(line.startswith('[static_tf_pub] ') for line in lines)

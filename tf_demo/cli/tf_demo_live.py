@@ -15,9 +15,10 @@
 """
 ``tf_demo_live``: the README's demo in one command, without ROS.
 
-Starts ``static_tf_pub``, ``dynamic_tf_pub`` and ``tf_listener`` as child processes on the same
-DDS domain, listens to TF itself and prints the live transform target <- source (default
-odom <- camera_link) until Ctrl-C or ``--duration`` seconds, then stops the children cleanly.
+Starts ``static_tf_pub``, ``dynamic_tf_pub``, ``tf_listener`` and ``tf_echo <target> <source>``
+as child processes on the same DDS domain and shows their output, each line prefixed with the
+child's name; listens to TF itself and prints the live transform target <- source (default
+odom <- camera_link); stops everything cleanly after ``--duration`` seconds or on Ctrl-C.
 
     tf_demo_live [--duration S] [--rate HZ] [--target odom] [--source camera_link] [--quiet]
 """
@@ -26,18 +27,22 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Sequence
+from dataclasses import dataclass
 import math
 import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 from typing import Any
+from typing import IO
 
 from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import transform_stamped_args
 
 DEMO_NODES = ('static_tf_pub', 'dynamic_tf_pub', 'tf_listener')
+ECHO_TOOL = 'tf_echo'
 CHILD_STOP_TIMEOUT_S = 5.0
 SPIN_SLICE_S = 0.1
 
@@ -56,6 +61,7 @@ def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
     parser.add_argument(
         '--quiet', action='store_true', help="hide the child processes' own output"
     )
+    parser.add_argument('--no-echo', action='store_true', help='do not start tf_echo')
     return parser.parse_args(list(argv))
 
 
@@ -102,43 +108,87 @@ def format_waiting(target: str, source: str, reason: object) -> str:
     return f'{target} <- {source}: waiting ({reason})'
 
 
-def child_command(name: str) -> list[str]:
-    """Command line running one of the demo nodes with this interpreter."""
-    return [sys.executable, '-m', f'tf_demo.nodes.{name}']
+@dataclass
+class Child:
+    """A started child process and the thread that relays its output."""
+
+    name: str
+    process: subprocess.Popen[str]
+    relay: threading.Thread | None
 
 
-def start_children(quiet: bool) -> list[subprocess.Popen[bytes]]:
-    """Start the demo nodes (same environment, so the same ROS_DOMAIN_ID)."""
-    output = subprocess.DEVNULL if quiet else None
-    return [
-        subprocess.Popen(
-            child_command(name), stdin=subprocess.DEVNULL, stdout=output, stderr=output
-        )
+def child_command(module: str, *args: str) -> list[str]:
+    """Command line running ``module``'s ``main()`` with this interpreter."""
+    code = f'import sys; from {module} import main; sys.exit(main())'
+    return [sys.executable, '-c', code, *args]
+
+
+def prefixed(name: str, line: str) -> str:
+    """Return a child's output line as shown by the demo: ``[name] line``."""
+    return f'[{name}] {line.rstrip()}'
+
+
+def _relay(name: str, stream: IO[str]) -> None:
+    for line in stream:
+        print(prefixed(name, line), flush=True)
+
+
+def start_child(name: str, command: list[str], quiet: bool) -> Child:
+    """Start one child; unless ``quiet``, relay its stdout and stderr with a name prefix."""
+    process = subprocess.Popen(
+        command,
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.DEVNULL if quiet else subprocess.PIPE,
+        stderr=subprocess.DEVNULL if quiet else subprocess.STDOUT,
+        text=True,
+        start_new_session=True,  # Ctrl-C reaches only the demo, which stops children in order
+    )
+    relay = None
+    if process.stdout is not None:
+        relay = threading.Thread(target=_relay, args=(name, process.stdout), daemon=True)
+        relay.start()
+    return Child(name, process, relay)
+
+
+def start_children(options: argparse.Namespace) -> list[Child]:
+    """Start the demo nodes and tf_echo (same environment, so the same ROS_DOMAIN_ID)."""
+    children = [
+        start_child(name, child_command(f'tf_demo.nodes.{name}'), options.quiet)
         for name in DEMO_NODES
     ]
+    if not options.no_echo:
+        command = child_command(f'tf_demo.cli.{ECHO_TOOL}', options.target, options.source)
+        children.append(start_child(ECHO_TOOL, command, options.quiet))
+    return children
 
 
-def stop_children(children: list[subprocess.Popen[bytes]]) -> list[int]:
+def stop_children(children: list[Child]) -> list[int]:
     """SIGINT every child, wait up to 5 s each, kill the stragglers; return exit codes."""
     for child in children:
-        if child.poll() is None:
-            child.send_signal(signal.SIGINT)
+        if child.process.poll() is None:
+            child.process.send_signal(signal.SIGINT)
     codes = []
     for child in children:
         try:
-            codes.append(child.wait(timeout=CHILD_STOP_TIMEOUT_S))
+            codes.append(child.process.wait(timeout=CHILD_STOP_TIMEOUT_S))
         except subprocess.TimeoutExpired:
-            child.kill()
-            codes.append(child.wait())
+            child.process.kill()
+            codes.append(child.process.wait())
+        if child.relay is not None:
+            child.relay.join(timeout=CHILD_STOP_TIMEOUT_S)
     return codes
 
 
-def _dead_child(children: list[subprocess.Popen[bytes]]) -> str | None:
-    for name, child in zip(DEMO_NODES, children, strict=True):
-        code = child.poll()
+def _dead_child(children: list[Child]) -> str | None:
+    for child in children:
+        code = child.process.poll()
         if code is not None:
-            return f'{name} exited with code {code}'
+            return f'{child.name} exited with code {code}'
     return None
+
+
+def _interrupt(_signum: int, _frame: object) -> None:
+    raise KeyboardInterrupt
 
 
 def run(options: argparse.Namespace, ros_args: list[str]) -> int:
@@ -147,7 +197,9 @@ def run(options: argparse.Namespace, ros_args: list[str]) -> int:
     from tf_demo.ros.buffer import Buffer
     from tf_demo.ros.transform_listener import TransformListener
 
-    children = start_children(options.quiet)
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, _interrupt)
+    children = start_children(options)
     failure: str | None = None
     transport.init(args=['tf_demo_live', *ros_args])
     node = transport.create_node('tf_demo_live')
