@@ -30,7 +30,9 @@ from collections.abc import Callable
 import logging
 import math
 import threading
+from typing import Literal
 from typing import NamedTuple
+from typing import overload
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -727,6 +729,25 @@ class BufferCore:
             (ox + t2[0], oy + t2[1], oz + t2[2]), math3d.quat_from_matrix(basis), stamp
         )
 
+    @overload
+    def can_transform(
+        self,
+        target: str,
+        source: str,
+        time_ns: int,
+        return_debug_tuple: Literal[False] = False,
+    ) -> bool: ...
+
+    @overload
+    def can_transform(
+        self, target: str, source: str, time_ns: int, return_debug_tuple: Literal[True]
+    ) -> tuple[bool, str]: ...
+
+    @overload
+    def can_transform(
+        self, target: str, source: str, time_ns: int, return_debug_tuple: bool
+    ) -> bool | tuple[bool, str]: ...
+
     def can_transform(
         self, target: str, source: str, time_ns: int, return_debug_tuple: bool = False
     ) -> bool | tuple[bool, str]:
@@ -748,6 +769,39 @@ class BufferCore:
                     text = error or ''
         ok = not text
         return (ok, text) if return_debug_tuple else ok
+
+    @overload
+    def can_transform_full(
+        self,
+        target: str,
+        target_time_ns: int,
+        source: str,
+        source_time_ns: int,
+        fixed: str,
+        return_debug_tuple: Literal[False] = False,
+    ) -> bool: ...
+
+    @overload
+    def can_transform_full(
+        self,
+        target: str,
+        target_time_ns: int,
+        source: str,
+        source_time_ns: int,
+        fixed: str,
+        return_debug_tuple: Literal[True],
+    ) -> tuple[bool, str]: ...
+
+    @overload
+    def can_transform_full(
+        self,
+        target: str,
+        target_time_ns: int,
+        source: str,
+        source_time_ns: int,
+        fixed: str,
+        return_debug_tuple: bool,
+    ) -> bool | tuple[bool, str]: ...
 
     def can_transform_full(  # noqa: PLR0917 (tf2's argument order)
         self,
