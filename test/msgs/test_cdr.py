@@ -334,3 +334,53 @@ def test_unknown_types_are_a_cdr_error() -> None:
     with pytest.raises(cdr.CdrError, match="'foo_msgs/msg/Bar' is not a ROS message type"):
         cdr.deserialize('foo_msgs/msg/Bar', b'\x00\x01\x00\x00')
     assert cdr.msgtype_of('geometry_msgs/Vector3') == 'geometry_msgs/msg/Vector3'
+
+
+def _big_endian_tf_message(
+    transforms: list[tuple[str, str, int, int, tuple[float, ...]]],
+) -> bytes:
+    """Write a TFMessage as CDR_BE by the layout rules (a second, independent writer)."""
+    out = bytearray(b'\x00\x00\x00\x00' + pack('>I', len(transforms)))
+
+    def align(alignment: int) -> None:
+        out.extend(bytes(-(len(out) - 4) % alignment))
+
+    for parent, child, sec, nanosec, pose in transforms:
+        align(4)
+        out += pack('>iI', sec, nanosec)
+        for text in (parent.encode(), child.encode()):
+            align(4)
+            out += pack('>I', len(text) + 1) + text + b'\x00'
+        align(8)
+        out += pack('>7d', *pose)
+    return bytes(out)
+
+
+@pytest.mark.property
+@settings(max_examples=60, deadline=None)
+@given(message=message_strategy('tf2_msgs/msg/TFMessage'))
+def test_big_endian_tf_messages_decode_like_little_endian(message: Any) -> None:
+    """Multi-transform CDR_BE input decodes to the same message on both decode paths."""
+    transforms = [
+        (
+            t.header.frame_id,
+            t.child_frame_id,
+            t.header.stamp.sec,
+            t.header.stamp.nanosec,
+            (
+                t.transform.translation.x,
+                t.transform.translation.y,
+                t.transform.translation.z,
+                t.transform.rotation.x,
+                t.transform.rotation.y,
+                t.transform.rotation.z,
+                t.transform.rotation.w,
+            ),
+        )
+        for t in message.transforms
+    ]
+    big_endian = _big_endian_tf_message(transforms)
+    assert cdr.deserialize(TFMessage, big_endian) == message
+    assert cdr.decode_tf_message_transforms(big_endian) == cdr.decode_tf_message_transforms(
+        cdr.serialize(message)
+    )

@@ -206,6 +206,8 @@ class _Builder:
         # A string whose characters head the pending run (its local name), and the run's items.
         self.dynamic: str | None = None
         self.dynamic_items: list[Item] = []
+        # The items of a pending run without strings (for reading it ahead, see _Prefetch).
+        self.run_layout: list[Item] = []
 
     def name(self, prefix: str) -> str:
         """Return a fresh local variable name."""
@@ -247,6 +249,7 @@ class _Builder:
             self.known = min(self.known, _lowbit(self.run_size))
         self.run_format, self.run_items, self.run_size = [], [], 0
         self.dynamic, self.dynamic_items = None, []
+        self.run_layout = []
 
     def add_item(self, code: str, alignment: int, size: int, value: str) -> None:
         """Append one item (a local to read into, or an expression to write) to the run."""
@@ -256,6 +259,7 @@ class _Builder:
             self.align(alignment)
             self.run_format.append(code)
             self.run_size += size
+            self.run_layout.append((code, alignment, size))
         self.run_items.append(value)
 
     def align(self, alignment: int) -> None:
@@ -267,15 +271,58 @@ class _Builder:
         raise NotImplementedError
 
 
+class _Prefetch:
+    """
+    The leading run of a sequence element, read ahead with the previous element's last run.
+
+    In a loop over elements that start with primitives (a stamp, a string length...) and end
+    with a string and its following run, each iteration's last unpack also reads the next
+    element's leading primitives: one unpack call fewer per element. The first element's are
+    read before the loop (``lines``).
+    """
+
+    def __init__(self, body_start: int) -> None:
+        self.body_start = body_start
+        self.lines: list[str] | None = None
+        self.items: list[Item] = []
+        self.variables: list[str] = []
+        self.temporaries: list[str] = []
+
+
 class _DecoderBuilder(_Builder):
     """Generate ``decode(buf, pos) -> (message, pos)`` for one type and byte order."""
 
     def __init__(self, endian: Endian) -> None:
         super().__init__(endian)
         self.builds: list[str] = []
+        self.capture: _Prefetch | None = None
+
+    def _capture_prefix(self) -> bool:
+        """Take the first run of a loop body out of the body, as its prefetch; say if done."""
+        capture, self.capture = self.capture, None
+        if capture is None or self.dynamic is not None or not self.run_items:
+            return False
+        unpack = self.struct_method(''.join(self.run_format), 'unpack_from')
+        indent = '    ' * self.indent
+        capture.lines = [
+            *self.lines[capture.body_start :],
+            f'{indent}{", ".join(self.run_items)}, = {unpack}(buf, pos)',
+            f'{indent}pos += {self.run_size}',
+        ]
+        del self.lines[capture.body_start :]
+        capture.items = list(self.run_layout)
+        capture.variables = list(self.run_items)
+        self.settle()
+        for line in self.builds:  # objects whose fields are all in the prefix
+            self.emit(line)
+        self.builds = []
+        return True
 
     def flush(self) -> None:
         """Emit the pending run as one unpack, then the object constructions waiting for it."""
+        emits = self.dynamic is not None or bool(self.run_items) or bool(self.run_size)
+        if self.capture is not None and emits and self._capture_prefix():
+            return
         if self.dynamic is not None:
             length, string = self.dynamic.split(':')
             structs = DynamicStructs(self.endian, self.dynamic_items, decode=True)
@@ -345,18 +392,70 @@ class _DecoderBuilder(_Builder):
         start = len(self.lines)
         while True:
             del self.lines[start:]
-            self.emit(f'for _ in range({count}):')
+            index, last = self.name('i'), self.name('last')
+            self.emit(f'for {index} in range({count}):')
             self.indent += 1
             self.known = entry
+            prefetch = self.capture = _Prefetch(len(self.lines))
             element = self.value(field)
-            self.flush()
+            prefetched = prefetch.lines is not None and self.dynamic is not None
+            if prefetched:
+                self._flush_with_prefetch(prefetch, index, last)
+            else:
+                self.capture = None
+                if prefetch.lines is not None:  # not applicable after all: read it in place
+                    self.lines[prefetch.body_start : prefetch.body_start] = prefetch.lines
+                self.flush()
             self.emit(f'{append}({element})')
+            if prefetched:
+                variables = ', '.join(prefetch.variables)
+                self.emit(f'{variables}, = {", ".join(prefetch.temporaries)},')
             self.indent -= 1
             if self.known >= entry:
                 break
             entry = self.known
+        if prefetched and prefetch.lines is not None:
+            self.lines[start:start] = [
+                '    ' * self.indent + f'if {count}:',
+                *prefetch.lines,
+                '    ' * self.indent + f'{last} = {count} - 1',
+            ]
         self.known = min(self.known, entry)
         return result
+
+    def _flush_with_prefetch(self, prefetch: _Prefetch, index: str, last: str) -> None:
+        """Emit a loop body's final (string-headed) run, reading the next element's prefix too."""
+        assert self.dynamic is not None
+        length, string = self.dynamic.split(':')
+        unpack, size, raw, nul = (self.name(p) for p in ('u', 'z', 'r', 'n'))
+        prefetch.temporaries = [self.name('t') for _ in prefetch.variables]
+        variants = [
+            (f'if {index} != {last}:', self.dynamic_items + prefetch.items, prefetch.temporaries),
+            ('else:', self.dynamic_items, []),
+        ]
+        for header, items, extra in variants:
+            structs = DynamicStructs(self.endian, items, decode=True)
+            cache = self.constant('D', structs.cache)
+            make = self.constant('M', structs.make)
+            self.emit(header)
+            self.indent += 1
+            self.emit(
+                f'{unpack}, {size} = {cache}.get({length} << 3 | pos & 7) or {make}({length}, pos)'
+            )
+            targets = ', '.join([raw, nul, *self.run_items, *extra])
+            self.emit(f'{targets} = {unpack}(buf, pos)')
+            if not extra:  # the last element: nothing to read ahead
+                nones = ', '.join('None' for _ in prefetch.temporaries)
+                self.emit(f'{", ".join(prefetch.temporaries)}, = {nones},')
+            self.indent -= 1
+        self.emit(f'pos += {size}')
+        self.emit(f'if {nul}:')
+        self.emit('    raise _Malformed')
+        self.emit(f'{string} = {raw}.decode()')
+        self.settle()
+        for line in self.builds:
+            self.emit(line)
+        self.builds = []
 
     def numeric_sequence(self, field: FieldSpec, count: str) -> str:
         """Read ``count`` numeric primitives into an ``array.array``; return its name."""
