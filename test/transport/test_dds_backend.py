@@ -421,3 +421,41 @@ def test_parameter_callbacks_validate_and_observe_changes(world):
     assert node.get_parameter('rate').value == 2.0
     assert node.get_parameter('unit').value == 'kHz'
     assert seen == [['rate', 'unit']]
+
+
+@pytest.mark.dds
+def test_sim_time_timer_follows_clock_and_survives_a_backward_jump(world):
+    """A 1 s timer on /clock time fires as sim time advances, also after /clock jumps back."""
+    node = dds_backend.DdsNode(
+        'sim_timer', parameter_overrides=[Parameter('use_sim_time', value=True)]
+    )
+    clock_node = dds_backend.DdsNode('sim_clock')
+    clock_publisher = clock_node.create_publisher(
+        rosgraph_msgs.Clock,
+        '/clock',
+        QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT),
+    )
+    fired_at: list[int] = []
+    node.create_timer(1.0, lambda: fired_at.append(node.get_clock().now().nanoseconds))
+    executor = dds_backend.SingleThreadedExecutor()
+    executor.add_node(node)
+
+    def advance_to(seconds: float) -> None:
+        target = round(seconds * 1e9)
+        sec, nanosec = divmod(target, 1_000_000_000)
+        deadline = time.monotonic() + 5
+        while node.get_clock().now().nanoseconds != target and time.monotonic() < deadline:
+            clock_publisher.publish(
+                rosgraph_msgs.Clock(clock=builtin_interfaces.Time(sec=sec, nanosec=nanosec))
+            )
+            executor.spin_once(timeout_sec=0.02)
+        for _ in range(3):
+            executor.spin_once(timeout_sec=0.02)
+
+    for seconds in (100.0, 100.5, 101.2):
+        advance_to(seconds)
+    # Created at sim time 0, the timer is overdue when /clock jumps to 100 s (as in rcl).
+    assert fired_at == [100_000_000_000, 101_200_000_000]
+    for seconds in (10.0, 10.6, 11.3):
+        advance_to(seconds)
+    assert fired_at == [100_000_000_000, 101_200_000_000, 11_300_000_000]

@@ -516,12 +516,17 @@ class DdsTimer:
         self.timer_period_ns = period_ns
         self.clock = clock
         self._canceled = False
-        self._next_call_ns = self._now_ns() + period_ns
+        self._next_call_ns = int(clock.now().nanoseconds) + period_ns
         self._last_call_ns: int | None = None
         self._wake: Callable[[], None] | None = None
 
     def _now_ns(self) -> int:
-        return int(self.clock.now().nanoseconds)
+        now = int(self.clock.now().nanoseconds)
+        if now < self._next_call_ns - self.timer_period_ns:
+            # The clock jumped backwards (e.g. a bag replayed on /clock from the start):
+            # restart the period from the new time instead of waiting for the old deadline.
+            self._next_call_ns = now + self.timer_period_ns
+        return now
 
     def cancel(self) -> None:
         """Stop calling the callback until :meth:`reset`."""
