@@ -46,6 +46,8 @@ def test_domain_id_defaults_to_zero_and_rejects_garbage():
     """ROS_DOMAIN_ID: unset means 0, numbers are used as is, garbage is a clear error."""
     assert dds_wire.domain_id_from_env({}) == 0
     assert dds_wire.domain_id_from_env({'ROS_DOMAIN_ID': '42'}) == 42
+    assert dds_wire.domain_id_from_env({'ROS_DOMAIN_ID': '0x10'}) == 16
+    assert dds_wire.domain_id_from_env({'ROS_DOMAIN_ID': '010'}) == 8
     with pytest.raises(dds_wire.DdsConfigError, match=r"ROS_DOMAIN_ID='abc' is not a valid"):
         dds_wire.domain_id_from_env({'ROS_DOMAIN_ID': 'abc'})
     with pytest.raises(dds_wire.DdsWireError, match=r'0\.\.232'):

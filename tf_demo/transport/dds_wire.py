@@ -137,8 +137,15 @@ def domain_id_from_env(env: Mapping[str, str]) -> int:
     text = env.get('ROS_DOMAIN_ID', '').strip()
     if not text:
         return 0
+    # strtoul(text, &end, 0) as rcl: 0x.. is hexadecimal, a leading 0 means octal.
+    if text[:2].lower() == '0x':
+        base = 16
+    elif len(text) > 1 and text.startswith('0'):
+        base = 8
+    else:
+        base = 10
     try:
-        value = int(text, 0)
+        value = int(text, base)
     except ValueError:
         value = -1
     if not 0 <= value <= 232:
