@@ -297,7 +297,7 @@ def test_point_transformer_logs_the_point_in_map(spawn: Any, dds_env: dict[str, 
 
 def test_tf_demo_live_shows_listener_tf_echo_and_its_own_lines(spawn: Any) -> None:
     """The README demo relays tf_listener and tf_echo, prints transforms, exits 0 after -d."""
-    live = spawn.start('tf_demo_live', '--duration', '20', '--rate', '4')
+    live = spawn.start('tf_demo_live', '--duration', '12', '--rate', '4')
     out, err = live.communicate(timeout=STARTUP_TIMEOUT_S + 30)
     assert live.returncode == 0, err
     lines = out.splitlines()
