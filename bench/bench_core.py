@@ -17,11 +17,12 @@ Benchmark ``tf_demo.core.BufferCore`` against tf2's C++ core (``tf2_py``) in one
 
 Printed, never asserted.  Usage (from the repository root)::
 
-    .venv/bin/python bench/bench_core.py [--repeat 7] [--json]
+    .venv/bin/python bench/bench_core.py [--rounds 5] [--repeat 3] [--json]
 
 Both halves run the same workloads with the same timing method (``time.perf_counter`` around a
-loop of calls, the median over ``--repeat`` repetitions): ours under the virtual environment's
-Python, tf2's in a ``/usr/bin/python3`` subprocess running this same file with ``--half tf2``
+loop of calls, the median over ``--repeat`` repetitions), in alternating rounds of one process
+each: ours under the virtual environment's Python, tf2's in a ``/usr/bin/python3`` subprocess
+running this same file with ``--half tf2``
 (Debian's ``python3-tf2``, the ROS 1 Noetic build of tf2's C++ core).  Inputs are prepared
 outside the timed loops on both sides (tf2's ``TransformStamped`` messages and ``rospy.Time``
 stamps, our plain tuples and ints).  Memory is the resident-set growth of a fresh process
@@ -374,7 +375,8 @@ ROWS = [
 def main(argv=None):
     """Run the benchmark, or one half of it (``--half``, ``--memory``) for the driver."""
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[1])
-    parser.add_argument('--repeat', type=int, default=7, help='repetitions per workload (median)')
+    parser.add_argument('--rounds', type=int, default=5, help='alternating ours/tf2 rounds')
+    parser.add_argument('--repeat', type=int, default=3, help='repetitions inside each round')
     parser.add_argument('--half', choices=('ours', 'tf2'), help=argparse.SUPPRESS)
     parser.add_argument('--memory', choices=('ours', 'tf2'), help=argparse.SUPPRESS)
     parser.add_argument('--json', action='store_true', help='also print the raw numbers as JSON')
@@ -386,33 +388,46 @@ def main(argv=None):
         print(json.dumps((ours_memory if args.memory == 'ours' else tf2_memory)()))
         return 0
 
-    ours = _run_json(sys.executable, '--half', 'ours', '--repeat', str(args.repeat))
-    ours_mem = _run_json(sys.executable, '--memory', 'ours')
+    # Rounds alternate between the two halves so that a change in the machine's load hits both;
+    # each round is one process per half (median of --repeat inside), ratios are taken per round.
     have_tf2 = _tf2_available()
-    theirs = (
-        _run_json(SYSTEM_PYTHON, '--half', 'tf2', '--repeat', str(args.repeat)) if have_tf2 else {}
-    )
+    rounds = []
+    for _ in range(args.rounds):
+        ours = _run_json(sys.executable, '--half', 'ours', '--repeat', str(args.repeat))
+        theirs = (
+            _run_json(SYSTEM_PYTHON, '--half', 'tf2', '--repeat', str(args.repeat))
+            if have_tf2
+            else {}
+        )
+        rounds.append((ours, theirs))
+    ours_mem = _run_json(sys.executable, '--memory', 'ours')
     theirs_mem = _run_json(SYSTEM_PYTHON, '--memory', 'tf2') if have_tf2 else None
 
-    print(f'tf_demo.core vs tf2 C++ core (tf2_py), median of {args.repeat} runs per workload')
+    print(
+        f'tf_demo.core vs tf2 C++ core (tf2_py): {args.rounds} alternating rounds x median of '
+        f'{args.repeat}; medians shown, ratio = median of per-round ratios'
+    )
     print(f'{"workload":64} {"ours":>11} {"tf2":>11} {"ours/tf2":>9}  target')
+    summary = {}
     for key, label, target in ROWS:
-        mine = ours[key]
-        other = theirs.get(key)
+        mine = statistics.median(r[0][key] for r in rounds)
+        other = statistics.median(r[1][key] for r in rounds) if have_tf2 else None
+        ratio = statistics.median(r[0][key] / r[1][key] for r in rounds) if have_tf2 else None
+        summary[key] = {'ours': mine, 'tf2': other, 'ratio': ratio}
         unit = 'ms' if key == 'batch_10000' else 'us'
         scale = 1e3 if unit == 'ms' else 1e6
-        ratio = f'{mine / other:8.2f}x' if other else '      n/a'
+        ratio_text = f'{ratio:8.2f}x' if ratio else '      n/a'
         other_text = f'{other * scale:8.2f} {unit}' if other else '        n/a'
         note = target or ''
-        if key == 'batch_10000' and other:
-            note += f'  (speed-up {other / mine:.1f}x)'
-        print(f'{label:64} {mine * scale:8.2f} {unit} {other_text} {ratio}  {note}')
+        if key == 'batch_10000' and ratio:
+            note += f'  (speed-up {1 / ratio:.1f}x)'
+        print(f'{label:64} {mine * scale:8.2f} {unit} {other_text} {ratio_text}  {note}')
     mem_ratio = f'{ours_mem / theirs_mem:8.2f}x' if theirs_mem else '      n/a'
     theirs_mem_text = f'{theirs_mem / 2**20:8.2f} MB' if theirs_mem is not None else '        n/a'
     label = f'memory: RSS growth, {MEMORY_FRAMES} frames x {MEMORY_SECONDS} s x {MEMORY_RATE} Hz'
     print(f'{label:64} {ours_mem / 2**20:8.2f} MB {theirs_mem_text} {mem_ratio}  <= 30 MB')
     if args.json:
-        print(json.dumps({'ours': ours, 'tf2': theirs, 'memory': [ours_mem, theirs_mem]}))
+        print(json.dumps({'workloads': summary, 'memory_bytes': [ours_mem, theirs_mem]}))
     return 0
 
 
