@@ -384,3 +384,10 @@ def test_big_endian_tf_messages_decode_like_little_endian(message: Any) -> None:
     assert cdr.decode_tf_message_transforms(big_endian) == cdr.decode_tf_message_transforms(
         cdr.serialize(message)
     )
+
+
+def test_deserialize_accepts_an_instance_as_the_type() -> None:
+    """An (unhashable) message instance names its type as well as its class does."""
+    data = cdr.serialize(Vector3(x=2.0))
+    assert cdr.deserialize(Vector3(), data) == Vector3(x=2.0)
+    assert cdr.deserialize('geometry_msgs/Vector3', data) == Vector3(x=2.0)

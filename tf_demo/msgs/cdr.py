@@ -96,6 +96,19 @@ def _decoders(msgtype: str) -> tuple[_codegen.Decoder, _codegen.Decoder]:
     return _codegen.generate_decoder(msgtype, '>'), _codegen.generate_decoder(msgtype, '<')
 
 
+# Per message class (or type name): (msgtype, encoder, decoders), so a call costs one dict lookup.
+_CODECS: dict[Any, tuple[str, Callable[[Any], bytes], Any]] = {}
+
+
+def _codecs(key: Any) -> tuple[str, Callable[[Any], bytes], Any]:
+    """Return (msgtype, encoder, decoder pair) for a class, instance's class or type name."""
+    msgtype = msgtype_of(key)
+    entry = (msgtype, _encoder(msgtype), _decoders(msgtype))
+    if isinstance(key, str | type):
+        _CODECS[key] = entry
+    return entry
+
+
 def serialize(message: Any) -> bytes:
     """
     Encode ``message`` as ROS 2 does: ``00 01 00 00`` then the little-endian CDR body.
@@ -104,9 +117,10 @@ def serialize(message: Any) -> bytes:
 
     :raises CdrError: a field holds a value that cannot be encoded (wrong type, out of range).
     """
-    msgtype = msgtype_of(message)
+    cls = type(message)
+    msgtype, encoder, _ = _CODECS.get(cls) or _codecs(cls)
     try:
-        return _encoder(msgtype)(message)
+        return encoder(message)
     except Exception as exc:
         reference_serialize(msgtype, message)  # raises with the field's name
         msg = f'cannot encode {msgtype}: {exc}'
@@ -132,11 +146,13 @@ def deserialize(msg_type: type[MessageT] | str | Any, data: bytes | bytearray | 
     :raises CdrError: wrong header, truncated or malformed bytes; the message names the field
         and byte offset.
     """
-    msgtype = msgtype_of(msg_type)
+    known = _CODECS.get(msg_type) if isinstance(msg_type, str | type) else None
+    msgtype, _, decoders = known or _codecs(msg_type)
     buf = data if type(data) is bytes else bytes(data)
-    check_header(msgtype, buf)
+    if len(buf) < 4 or buf[0] or buf[1] > 1:
+        check_header(msgtype, buf)
     try:
-        return _decoders(msgtype)[buf[1]](buf, 4)[0]
+        return decoders[buf[1]](buf, 4)[0]
     except Exception as exc:
         raise _diagnose(msgtype, buf, exc) from None
 
