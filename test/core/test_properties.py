@@ -203,21 +203,35 @@ def test_rpy_round_trip_away_from_gimbal_lock(rpy: Vec) -> None:
     _assert_same_rotation(math3d.quat_from_rpy(*back), math3d.quat_from_rpy(roll, pitch, yaw))
 
 
-@given(st.floats(-math.pi, math.pi), st.sampled_from([math.pi / 2, -math.pi / 2]))
+@given(
+    st.floats(-3.0, 3.0),
+    st.floats(-3.0, 3.0),
+    st.sampled_from([math.pi / 2, -math.pi / 2]),
+)
 @tfst.profile_settings(200)
-def test_rpy_at_gimbal_lock_reports_yaw_zero_and_keeps_the_rotation(
-    angle: float, pitch: float
-) -> None:
-    """At |pitch| = pi/2 getRPY sets yaw 0, pitch ±pi/2, and the angles rebuild the rotation."""
-    matrix = math3d.matrix_from_rpy(angle, pitch, 0.0)
-    # Force the exact lock tf2 tests for (|R20| >= 1): rebuild the matrix from RPY with yaw 0.
-    roll, got_pitch, yaw = math3d.rpy_from_matrix(matrix)
-    if abs(matrix[2][0]) >= 1:
-        assert yaw == 0.0
-        assert got_pitch == math.copysign(math.pi / 2, pitch)
-        assert roll == math.atan2(matrix[2][1], matrix[2][2])
-    rebuilt = math3d.matrix_from_rpy(roll, got_pitch, yaw)
-    assert np.allclose(np.array(rebuilt), np.array(matrix), atol=1e-7)
+def test_rpy_at_gimbal_lock_follows_tf2_literally(roll: float, yaw: float, pitch: float) -> None:
+    """At |pitch| = pi/2 getRPY gives (roll, ±pi/2, 0): yaw is dropped, as tf2 does (spec §9)."""
+    matrix = math3d.matrix_from_rpy(roll, pitch, yaw)
+    assert abs(matrix[2][0]) >= 1  # the exact lock tf2 tests for
+    got_roll, got_pitch, got_yaw = math3d.rpy_from_matrix(matrix)
+    assert got_yaw == 0.0
+    assert got_pitch == math.copysign(math.pi / 2, pitch)
+    # tf2 takes atan2(R21, R22) = atan2(cos(p)·sin(r), cos(p)·cos(r)) with cos(p) ~ 6e-17 > 0
+    assert math.isclose(got_roll, roll, abs_tol=1e-12)
+    # The angles rebuild the rotation only when no yaw was lost.
+    rebuilt = math3d.matrix_from_rpy(got_roll, got_pitch, got_yaw)
+    assert np.allclose(rebuilt, math3d.matrix_from_rpy(roll, pitch, 0.0), atol=1e-12)
+    # The quaternion route agrees with the matrix route.
+    from_quat = math3d.rpy_from_quat(math3d.quat_from_rpy(roll, pitch, yaw))
+    assert abs(from_quat[1]) == pytest.approx(math.pi / 2, abs=1e-7)
+
+
+def test_rpy_matches_tf2_verified_values() -> None:
+    """setRPY(0.1, 0.2, 0.3) and the getRPY round trip of (0.1, 2.0, 0.1) match spec §9."""
+    q = math3d.quat_from_rpy(0.1, 0.2, 0.3)
+    _assert_vec_close(q, (0.034270799, 0.106020511, 0.143572175, 0.983347443), 1e-9)
+    back = math3d.rpy_from_quat(math3d.quat_from_rpy(0.1, 2.0, 0.1))
+    _assert_vec_close(back, (-3.0416, 1.1416, -3.0416), 1e-4)
 
 
 # --------------------------------------------------------------------------------------------
