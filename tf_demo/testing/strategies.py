@@ -363,8 +363,8 @@ def build_scenario(choose: Chooser) -> Scenario:
         inserts.sort(key=lambda op: int(op[3]))
     for _ in range(choose.integer(0, 2)):
         if _chance(choose, 50):
-            repeat = list(_pick(choose, inserts))
-            inserts.insert(choose.integer(0, len(inserts)), repeat)
+            duplicate = list(_pick(choose, inserts))
+            inserts.insert(choose.integer(0, len(inserts)), duplicate)
     for position, op in enumerate(inserts):
         if _chance(choose, 8):
             inserts[position] = ['set', '/' + str(op[1]), '/' + str(op[2]), *op[3:]]
