@@ -45,6 +45,7 @@ from tf_demo.transport.ros_args import set_global_ros_args
 __all__ = [
     'BackendError',
     'MultiThreadedExecutor',
+    'MutuallyExclusiveCallbackGroup',
     'Node',
     'NodeConfigError',
     'ReentrantCallbackGroup',
@@ -59,6 +60,7 @@ __all__ = [
     'shutdown',
     'spin',
     'spin_once',
+    'spin_until_future_complete',
 ]
 
 _BACKEND_MODULES = {
@@ -66,7 +68,13 @@ _BACKEND_MODULES = {
     'dds': 'tf_demo.transport.dds_backend',
 }
 _REEXPORTED = frozenset(
-    {'Node', 'SingleThreadedExecutor', 'MultiThreadedExecutor', 'ReentrantCallbackGroup'}
+    {
+        'Node',
+        'SingleThreadedExecutor',
+        'MultiThreadedExecutor',
+        'ReentrantCallbackGroup',
+        'MutuallyExclusiveCallbackGroup',
+    }
 )
 
 
@@ -78,8 +86,8 @@ def backend_module() -> ModuleType:
 def __getattr__(name: str) -> Any:
     if name in _REEXPORTED:
         module = backend_module()
-        if name == 'ReentrantCallbackGroup' and not hasattr(module, name):
-            msg = f'the {backend_name()} backend has no ReentrantCallbackGroup'
+        if not hasattr(module, name):
+            msg = f'the {backend_name()} backend has no {name}'
             raise AttributeError(msg)
         return getattr(module, name)
     msg = f'module {__name__!r} has no attribute {name!r}'
@@ -127,6 +135,15 @@ def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = No
     backend_module().spin_once(node, executor=executor, timeout_sec=timeout_sec)
 
 
+def spin_until_future_complete(
+    node: Any, future: Any, executor: Any = None, timeout_sec: float | None = None
+) -> None:
+    """Run ``node``'s callbacks until ``future`` is done or ``timeout_sec`` passed (as rclpy)."""
+    backend_module().spin_until_future_complete(
+        node, future, executor=executor, timeout_sec=timeout_sec
+    )
+
+
 def create_node(node_name: str, **kwargs: Any) -> Any:
     """Create a node of the selected backend (rclpy ``Node`` keyword arguments)."""
     return backend_module().create_node(node_name, **kwargs)
@@ -144,7 +161,14 @@ def _config_error_types() -> tuple[type[BaseException], ...]:
 
 
 class _StopRequest:
-    """Set by SIGINT/SIGTERM; a second SIGINT interrupts at once (KeyboardInterrupt)."""
+    """
+    Set by SIGINT/SIGTERM; a second SIGINT interrupts at once (KeyboardInterrupt).
+
+    Installed *before* the backend's ``init``: ``rclpy.init`` then puts its own C handlers on
+    top and chains to these (rclpy's ``signal_handler.cpp`` calls the previous handler, then
+    triggers the guard conditions that wake every executor), so a stop request wakes the
+    executor at once. Removed after ``shutdown`` (rclpy uninstalls its handlers there).
+    """
 
     def __init__(self) -> None:
         self.event = threading.Event()
@@ -163,7 +187,7 @@ class _StopRequest:
 
     def restore(self) -> None:
         for signum, previous in self.previous.items():
-            # None: the previous handler was installed from C (rclpy's); use Python's default.
+            # None: the previous handler was installed from C; use Python's default.
             default = signal.default_int_handler if signum == signal.SIGINT else signal.SIG_DFL
             signal.signal(signum, default if previous is None else previous)
         self.previous.clear()
@@ -177,18 +201,29 @@ def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> i
     backend, builds the node with ``factory()`` (a ``ValueError``, ``OSError`` or parameter
     error from it — e.g. :class:`NodeConfigError` — prints one line and exits 1), spins until
     Ctrl-C or SIGTERM, then destroys the node (its publishers flush) and shuts down: exit 0,
-    no traceback.
+    no traceback. Under rclpy the context being shut down elsewhere
+    (``ExternalShutdownException``) also ends the loop with exit 0.
     """
     argv = list(sys.argv if args is None else args)
     program = _program_name(argv)
+    stop = _StopRequest()
+    stop.install()
+    try:
+        return _run_installed(factory, argv, program, stop)
+    finally:
+        stop.restore()
+
+
+def _run_installed(
+    factory: Callable[[], Any], argv: list[str], program: str, stop: _StopRequest
+) -> int:
+    """Initialise, build, spin and finish one node (:func:`run_node` with its handlers set)."""
     try:
         init(argv)
     except (RosArgsError, BackendError) as error:
         print(ROS_ARGS_USAGE.replace('<executable>', program), file=sys.stderr)
         print(f'{program}: error: {error}', file=sys.stderr)
         return 1
-    stop = _StopRequest()
-    stop.install()
     node: Any = None
     try:
         try:
@@ -207,7 +242,6 @@ def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> i
         if type(error).__name__ != 'ExternalShutdownException':
             raise
     finally:
-        stop.restore()
         _finish(node)
     return 0
 

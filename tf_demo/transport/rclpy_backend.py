@@ -27,6 +27,7 @@ from __future__ import annotations
 from typing import Any
 
 import rclpy
+import rclpy.callback_groups
 import rclpy.clock
 import rclpy.duration
 import rclpy.exceptions
@@ -51,7 +52,11 @@ Executor = rclpy.executors.Executor
 SingleThreadedExecutor = rclpy.executors.SingleThreadedExecutor
 MultiThreadedExecutor = rclpy.executors.MultiThreadedExecutor
 ExternalShutdownException = rclpy.executors.ExternalShutdownException
+spin_until_future_complete = rclpy.spin_until_future_complete
 remove_ros_args = rclpy.utilities.remove_ros_args
+CallbackGroup = rclpy.callback_groups.CallbackGroup
+MutuallyExclusiveCallbackGroup = rclpy.callback_groups.MutuallyExclusiveCallbackGroup
+ReentrantCallbackGroup = rclpy.callback_groups.ReentrantCallbackGroup
 
 
 def _public(module: Any, names: list[str]) -> dict[str, Any]:
