@@ -32,6 +32,8 @@ only inside our half.
 """
 
 import argparse
+from collections.abc import Callable
+from collections.abc import Iterator
 import gc
 import json
 import math
@@ -41,6 +43,12 @@ import statistics
 import subprocess
 import sys
 import time
+from typing import Any
+
+Vec3 = tuple[float, float, float]
+Quat = tuple[float, float, float, float]
+#: parent, child, stamp_ns, translation, rotation, is_static
+Insert = tuple[str, str, int, Vec3, Quat, bool]
 
 SECOND = 1_000_000_000
 T0 = 1_000 * SECOND  # first stamp of every history
@@ -65,7 +73,7 @@ BATCH_STAMPS = 10_000
 MEMORY_FRAMES, MEMORY_SECONDS, MEMORY_RATE = 100, 10, 100
 
 
-def _pose(index, k):
+def _pose(index: int, k: int) -> tuple[Vec3, Quat]:
     """Return a deterministic, slowly varying (translation, rotation) for sample k of a link."""
     angle = 0.01 * k + 0.1 * index
     half = angle / 2.0
@@ -75,7 +83,7 @@ def _pose(index, k):
     )
 
 
-def rep105_inserts():
+def rep105_inserts() -> list[Insert]:
     """Return the REP-105 inserts: (parent, child, stamp_ns, t, q, is_static)."""
     out = [(p, c, 0, t, q, True) for p, c, t, q in REP105_STATIC]
     for index, (parent, child) in enumerate(REP105_DYNAMIC):
@@ -85,7 +93,7 @@ def rep105_inserts():
     return out
 
 
-def chain_inserts():
+def chain_inserts() -> list[Insert]:
     """Return a 30-link chain l0 -> l1 -> ... -> l30, every link dynamic at 10 Hz for 10 s."""
     out = []
     for index in range(CHAIN_LINKS):
@@ -95,13 +103,13 @@ def chain_inserts():
     return out
 
 
-def interior_stamps(count, seed):
+def interior_stamps(count: int, seed: int) -> list[int]:
     """Return ``count`` distinct-ish stamps strictly inside the 10 s history."""
     rng = random.Random(seed)
     return [T0 + rng.randint(1, 10 * SECOND - 1) for _ in range(count)]
 
 
-def insert_stream(count):
+def insert_stream(count: int) -> list[Insert]:
     """Return ``count`` dynamic inserts of one link at 100 Hz (the insert benchmark)."""
     return [
         ('odom', 'base_footprint', T0 + k * SECOND // 100, *_pose(0, k), False)
@@ -109,7 +117,7 @@ def insert_stream(count):
     ]
 
 
-def _median_per_call(run, calls, repeat):
+def _median_per_call(run: Callable[[], None], calls: int, repeat: int) -> float:
     """Run ``run()`` (which makes ``calls`` calls) ``repeat`` times; median seconds per call."""
     samples = []
     for _ in range(repeat):
@@ -120,7 +128,7 @@ def _median_per_call(run, calls, repeat):
     return statistics.median(samples)
 
 
-def _rss_bytes():
+def _rss_bytes() -> int:
     """Return this process's resident set size from /proc."""
     with open('/proc/self/statm') as statm:
         return int(statm.read().split()[1]) * os.sysconf('SC_PAGE_SIZE')
@@ -130,10 +138,10 @@ def _rss_bytes():
 # tf2 half (runs under /usr/bin/python3)
 
 
-def _tf2_message(parent, child, stamp_ns, t, q):
+def _tf2_message(parent: str, child: str, stamp_ns: int, t: Vec3, q: Quat) -> Any:
     """Build a ROS 1 ``TransformStamped``."""
     from geometry_msgs.msg import TransformStamped
-    import rospy
+    import rospy  # type: ignore[import-not-found]
 
     msg = TransformStamped()
     msg.header.frame_id = parent
@@ -145,7 +153,7 @@ def _tf2_message(parent, child, stamp_ns, t, q):
     return msg
 
 
-def _tf2_buffer(inserts):
+def _tf2_buffer(inserts: list[Insert]) -> Any:
     """Return a tf2 ``BufferCore`` (10 s cache) filled with ``inserts``."""
     import rospy
     import tf2_py
@@ -160,17 +168,17 @@ def _tf2_buffer(inserts):
     return buffer
 
 
-def tf2_half(repeat):
+def tf2_half(repeat: int) -> dict[str, float]:
     """Time every workload on tf2's C++ core; return seconds per call by workload name."""
     import rospy
 
-    def times(stamps):
+    def times(stamps: list[int]) -> list[Any]:
         return [rospy.Time(s // SECOND, s % SECOND) for s in stamps]
 
-    results = {}
+    results: dict[str, float] = {}
     stream = [_tf2_message(p, c, s, t, q) for p, c, s, t, q, _ in insert_stream(CALLS)]
 
-    def insert_run():
+    def insert_run() -> None:
         buffer = _tf2_buffer([])
         set_transform = buffer.set_transform
         for msg in stream:
@@ -181,19 +189,19 @@ def tf2_half(repeat):
     rep105 = _tf2_buffer(rep105_inserts())
     stamps = times(interior_stamps(CALLS, 1))
 
-    def can_run():
+    def can_run() -> None:
         can = rep105.can_transform_core
         for stamp in stamps:
             can('map', 'camera_link', stamp)
 
-    def lookup_run():
+    def lookup_run() -> None:
         lookup = rep105.lookup_transform_core
         for stamp in stamps:
             lookup('map', 'camera_link', stamp)
 
     zero = rospy.Time(0)
 
-    def latest_run():
+    def latest_run() -> None:
         lookup = rep105.lookup_transform_core
         for _ in range(CALLS):
             lookup('map', 'camera_link', zero)
@@ -205,7 +213,7 @@ def tf2_half(repeat):
     chain = _tf2_buffer(chain_inserts())
     chain_stamps = times(interior_stamps(CALLS, 2))
 
-    def chain_run():
+    def chain_run() -> None:
         lookup = chain.lookup_transform_core
         for stamp in chain_stamps:
             lookup('l0', f'l{CHAIN_LINKS}', stamp)
@@ -214,7 +222,7 @@ def tf2_half(repeat):
 
     batch_stamps = times(interior_stamps(BATCH_STAMPS, 3))
 
-    def batch_run():
+    def batch_run() -> None:
         lookup = rep105.lookup_transform_core
         for stamp in batch_stamps:
             lookup('map', 'camera_link', stamp)
@@ -223,7 +231,7 @@ def tf2_half(repeat):
     return results
 
 
-def tf2_memory():
+def tf2_memory() -> int:
     """Return the RSS growth in bytes of caching the memory workload in tf2's core."""
     import rospy
     import tf2_py
@@ -237,7 +245,7 @@ def tf2_memory():
     return _rss_bytes() - before
 
 
-def _memory_inserts():
+def _memory_inserts() -> Iterator[tuple[str, str, int, Vec3, Quat]]:
     """Yield 100 frames x 10 s x 100 Hz of samples (a star around ``world``), time-ordered."""
     for k in range(MEMORY_SECONDS * MEMORY_RATE):
         stamp = T0 + k * SECOND // MEMORY_RATE
@@ -249,7 +257,7 @@ def _memory_inserts():
 # Our half
 
 
-def _our_buffer(inserts):
+def _our_buffer(inserts: list[Insert]) -> Any:
     """Return a ``tf_demo`` ``BufferCore`` (10 s cache) filled with ``inserts``."""
     from tf_demo.core import BufferCore
 
@@ -259,14 +267,14 @@ def _our_buffer(inserts):
     return buffer
 
 
-def ours_half(repeat):
+def ours_half(repeat: int) -> dict[str, float]:
     """Time every workload on ``tf_demo.core``; return seconds per call by workload name."""
     import numpy as np
 
-    results = {}
+    results: dict[str, float] = {}
     stream = insert_stream(CALLS)
 
-    def insert_run():
+    def insert_run() -> None:
         buffer = _our_buffer([])
         set_transform = buffer.set_transform
         for parent, child, stamp, t, q, _ in stream:
@@ -277,17 +285,17 @@ def ours_half(repeat):
     rep105 = _our_buffer(rep105_inserts())
     stamps = interior_stamps(CALLS, 1)
 
-    def can_run():
+    def can_run() -> None:
         can = rep105.can_transform
         for stamp in stamps:
             can('map', 'camera_link', stamp)
 
-    def lookup_run():
+    def lookup_run() -> None:
         lookup = rep105.lookup_transform
         for stamp in stamps:
             lookup('map', 'camera_link', stamp)
 
-    def latest_run():
+    def latest_run() -> None:
         lookup = rep105.lookup_transform
         for _ in range(CALLS):
             lookup('map', 'camera_link', 0)
@@ -299,7 +307,7 @@ def ours_half(repeat):
     chain = _our_buffer(chain_inserts())
     chain_stamps = interior_stamps(CALLS, 2)
 
-    def chain_run():
+    def chain_run() -> None:
         lookup = chain.lookup_transform
         for stamp in chain_stamps:
             lookup('l0', f'l{CHAIN_LINKS}', stamp)
@@ -308,14 +316,14 @@ def ours_half(repeat):
 
     batch_stamps = np.array(interior_stamps(BATCH_STAMPS, 3), dtype=np.int64)
 
-    def batch_run():
+    def batch_run() -> None:
         rep105.lookup_transforms('map', 'camera_link', batch_stamps)
 
     results['batch_10000'] = _median_per_call(batch_run, 1, repeat)
     return results
 
 
-def ours_memory():
+def ours_memory() -> int:
     """Return the RSS growth in bytes of caching the memory workload in ``tf_demo.core``."""
     from tf_demo.core import BufferCore
 
@@ -332,7 +340,7 @@ def ours_memory():
 # Driver
 
 
-def _run_json(python, *args):
+def _run_json(python: str, *args: str) -> Any:
     """Run this file under ``python`` with ``args``; return its JSON output."""
     env = dict(os.environ)
     env['PYTHONPATH'] = os.pathsep.join(p for p in (REPO_ROOT, env.get('PYTHONPATH', '')) if p)
@@ -347,7 +355,7 @@ def _run_json(python, *args):
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
-def _tf2_available():
+def _tf2_available() -> bool:
     """Tell whether ``/usr/bin/python3`` can import ``tf2_py``."""
     try:
         subprocess.run(
@@ -372,7 +380,7 @@ ROWS = [
 ]
 
 
-def main(argv=None):
+def main(argv: list[str] | None = None) -> int:
     """Run the benchmark, or one half of it (``--half``, ``--memory``) for the driver."""
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[1])
     parser.add_argument('--rounds', type=int, default=5, help='alternating ours/tf2 rounds')

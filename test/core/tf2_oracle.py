@@ -49,18 +49,19 @@ import json
 import os
 import sys
 import time
+from typing import Any
 
 from geometry_msgs.msg import TransformStamped
-import rospy
+import rospy  # type: ignore[import-not-found]
 import tf2_py
 
 
-def _time(ns):
+def _time(ns: int) -> Any:
     """Build a ``rospy.Time`` from integer nanoseconds."""
     return rospy.Time(ns // 1_000_000_000, ns % 1_000_000_000)
 
 
-def _message(op):
+def _message(op: list[Any]) -> Any:
     """Build the ``TransformStamped`` of a ``set`` operation."""
     _, parent, child, stamp_ns, translation, rotation, _, _ = op
     msg = TransformStamped()
@@ -75,7 +76,7 @@ def _message(op):
     return msg
 
 
-def _transform_result(msg):
+def _transform_result(msg: Any) -> dict[str, Any]:
     """Encode a looked-up ``TransformStamped``."""
     tr = msg.transform.translation
     rot = msg.transform.rotation
@@ -86,12 +87,12 @@ def _transform_result(msg):
     }
 
 
-def _error(exc):
+def _error(exc: Exception) -> dict[str, str]:
     """Encode an exception raised by ``tf2_py``."""
     return {'exc': type(exc).__name__, 'msg': str(exc)}
 
 
-def _run_op(buffer, op):
+def _run_op(buffer: Any, op: list[Any]) -> dict[str, Any] | None:
     """Apply one operation to ``buffer`` and return its encoded result."""
     kind = op[0]
     if kind == 'set':
@@ -140,19 +141,19 @@ def _run_op(buffer, op):
     return {'exc': 'ProtocolError', 'msg': f'unknown operation {kind!r}'}
 
 
-def run_scenario(scenario):
+def run_scenario(scenario: dict[str, Any]) -> list[dict[str, Any] | None]:
     """Run one scenario on a fresh ``BufferCore`` and return the per-operation results."""
     cache_time_ns = scenario.get('cache_time_ns', 10_000_000_000)
     buffer = tf2_py.BufferCore(_duration(cache_time_ns))
     return [_run_op(buffer, op) for op in scenario['ops']]
 
 
-def _duration(ns):
+def _duration(ns: int) -> Any:
     """Build a ``rospy.Duration`` from integer nanoseconds."""
     return rospy.Duration(ns // 1_000_000_000, ns % 1_000_000_000)
 
 
-def main():
+def main() -> None:
     """Serve scenario batches on stdin/stdout until EOF or ``"quit"``."""
     # tf2's C++ warnings (TF_REPEATED_DATA, ...) are written to file descriptor 2; silence them
     # but keep Python's own tracebacks visible on the original stderr.
