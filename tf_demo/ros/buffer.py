@@ -199,6 +199,7 @@ class Buffer(BufferCore):
         self.clock: Any = clock
         self.add_insert_callback(self._on_new_data)
         self._jump_handle = self._register_jump_callback()
+        self.srv = _create_frames_service(node, self) if node is not None else None
 
     # ----------------------------------------------------------------------------- plumbing
 
@@ -368,7 +369,7 @@ class Buffer(BufferCore):
         answer = BufferCore.can_transform(
             self, target_frame, source_frame, ns_from_time(time), return_debug_tuple=True
         )
-        return bool(answer[0]), str(answer[1])  # type: ignore[index]
+        return _debug_tuple(answer)
 
     def can_transform_full_core(
         self,
@@ -388,7 +389,7 @@ class Buffer(BufferCore):
             fixed_frame,
             return_debug_tuple=True,
         )
-        return bool(answer[0]), str(answer[1])  # type: ignore[index]
+        return _debug_tuple(answer)
 
     # ------------------------------------------------------------------------ blocking API
 
@@ -702,6 +703,35 @@ class Buffer(BufferCore):
 
     def _allFramesAsDot(self, time: Any = 0) -> str:  # noqa: N802 - tf2_py name
         return self.all_frames_as_dot(ns_from_time(time))
+
+
+def _create_frames_service(node: Any, buffer: Buffer) -> Any:
+    """
+    Offer tf2_ros's ``tf2_frames`` service (``tf2_msgs/srv/FrameGraph``) when the world has it.
+
+    ``ros2 run tf2_tools view_frames`` calls it. Nodes without ``create_service`` (the
+    standalone world) or without the service type simply do not offer it.
+    """
+    create_service = getattr(node, 'create_service', None)
+    if create_service is None:
+        return None
+    try:
+        import importlib
+
+        frame_graph = importlib.import_module('tf2_msgs.srv').FrameGraph
+    except (ImportError, AttributeError):
+        return None
+
+    def answer(_request: Any, _response: Any) -> Any:
+        return frame_graph.Response(frame_yaml=buffer.all_frames_as_yaml())
+
+    return create_service(frame_graph, 'tf2_frames', answer)
+
+
+def _debug_tuple(answer: bool | tuple[bool, str]) -> tuple[bool, str]:
+    if isinstance(answer, tuple):
+        return bool(answer[0]), str(answer[1])
+    return bool(answer), ''
 
 
 def _resolve(future: Future[Any], lookup: Callable[[], Any]) -> None:
