@@ -48,34 +48,73 @@ _ENDING_NONE = 0
 _ENDING_TARGET_PARENT = 1
 _ENDING_SOURCE_PARENT = 2
 _ENDING_FULL = 3
+_IDENTITY_ROW = np.array([[0.0, 0.0, 0.0, 1.0]])
 
 
-def _interpolate(columns: FloatArray, older: IntArray, ratio: FloatArray) -> FloatArray:
-    """Interpolate samples ``older`` and ``older + 1`` (``columns`` is ``(7, K)``) at ``ratio``."""
+def _accumulate(
+    quats: FloatArray, translations: FloatArray, acc_t: FloatArray, acc_q: FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """Return ``link * acc`` row-wise, with the same formula as the scalar walk."""
+    px, py, pz, pw = quats[:, 0], quats[:, 1], quats[:, 2], quats[:, 3]
+    sx, sy, sz = acc_t[:, 0], acc_t[:, 1], acc_t[:, 2]
+    ux = 2.0 * (py * sz - pz * sy)
+    uy = 2.0 * (pz * sx - px * sz)
+    uz = 2.0 * (px * sy - py * sx)
+    new_t = np.stack(
+        (
+            sx + pw * ux + (py * uz - pz * uy),
+            sy + pw * uy + (pz * ux - px * uz),
+            sz + pw * uz + (px * uy - py * ux),
+        ),
+        axis=-1,
+    )
+    new_t += translations
+    return new_t, quat_multiply_batch(quats, acc_q)
+
+
+def _interpolate(
+    columns: FloatArray, slerp: FloatArray, older: IntArray, ratio: FloatArray
+) -> FloatArray:
+    """
+    Interpolate samples ``older`` and ``older + 1`` at ``ratio``, as TimeCache.get_data.
+
+    ``columns`` is ``(7, K)``; ``slerp`` holds the per-interval slerp constants.
+    """
     keep = 1.0 - ratio
     newer = older + 1
-    one = [np.take(columns[i], older) for i in range(7)]
-    two = [np.take(columns[i], newer) for i in range(7)]
     out = np.empty((7, older.shape[0]))
     for i in range(3):
-        np.add(keep * one[i], ratio * two[i], out=out[i])
-    x0, y0, z0, w0 = one[3:]
-    x1, y1, z1, w1 = two[3:]
-    dot = x0 * x1 + y0 * y1 + z0 * z1 + w0 * w1
-    negative = dot < 0
-    theta = np.arccos(np.minimum(np.abs(dot), 1.0))
-    moving = theta != 0.0
-    safe = np.where(moving, theta, 1.0)
-    d = 1.0 / np.sin(safe)
-    s0 = np.sin(keep * safe) * d
-    s1 = np.sin(ratio * safe) * d
-    s1 = np.where(negative, -s1, s1)
-    s0 = np.where(moving, s0, 1.0)
-    s1 = np.where(moving, s1, 0.0)
-    for i, (a, b) in enumerate(((x0, x1), (y0, y1), (z0, z1), (w0, w1))):
-        np.add(a * s0, b * s1, out=out[3 + i])
+        np.add(keep * np.take(columns[i], older), ratio * np.take(columns[i], newer), out=out[i])
+    theta = np.take(slerp[0], older)
+    inverse_sin = np.take(slerp[1], older)
+    s0 = np.sin(keep * theta) * inverse_sin
+    s1 = np.sin(ratio * theta) * (inverse_sin * np.take(slerp[2], older))
+    for i in range(3, 7):
+        one = np.take(columns[i], older)
+        np.add(one * s0, np.take(columns[i], newer) * s1, out=out[i])
+    still = theta == 0.0
+    if still.any():  # a zero angle returns the older rotation unchanged, as tf2's slerp
+        out[3:, still] = columns[3:, older[still]]
     result: FloatArray = out.T
     return result
+
+
+def _older_indices(stamps: IntArray, times: IntArray) -> IntArray:
+    """
+    Return, per interior time, the last index whose stamp is <= the time.
+
+    A linear guess (exact for evenly spaced streams) is checked and only the misses go through
+    ``searchsorted``.
+    """
+    last = stamps.shape[0] - 1
+    span = float(stamps[-1] - stamps[0])
+    guess: IntArray = ((times - stamps[0]).astype(np.float64) * (last / span)).astype(np.int64)
+    np.clip(guess, 0, last - 1, out=guess)
+    hit = (np.take(stamps, guess) <= times) & (np.take(stamps, guess + 1) > times)
+    if not hit.all():
+        miss = ~hit
+        guess[miss] = np.searchsorted(stamps, times[miss], side='right') - 1
+    return guess
 
 
 def sample_batch(
@@ -95,7 +134,7 @@ def sample_batch(
             np.array([sample[7]], dtype=np.int64),
             None,
         )
-    stamps, columns, parent_ids = cache.arrays()
+    stamps, columns, parent_ids, slerp = cache.arrays()
     size = stamps.shape[0]
     if size == 0:
         return np.zeros((1, 7)), np.zeros(1, dtype=np.int64), np.zeros(count, dtype=bool)
@@ -103,13 +142,13 @@ def sample_batch(
     earliest = stamps[0]
     if size > 1 and count and times.min() > earliest and times.max() < latest:
         # Fast path: every lane is strictly inside the history.
-        older = np.searchsorted(stamps, times, side='right') - 1
+        older = _older_indices(stamps, times)
         one_parent = parent_ids[older]
         one_stamp = stamps[older]
         ratio = (times - one_stamp).astype(np.float64) / (stamps[older + 1] - one_stamp).astype(
             np.float64
         )
-        values = _interpolate(columns, older, ratio)
+        values = _interpolate(columns, slerp, older, ratio)
         switched = one_parent != parent_ids[older + 1]
         if switched.any():
             values[switched] = columns[:, older[switched]].T
@@ -131,7 +170,7 @@ def sample_batch(
         lanes = np.flatnonzero(inside)
         if lanes.size:
             lane_times = times[lanes]
-            older = np.searchsorted(stamps, lane_times, side='right') - 1
+            older = _older_indices(stamps, lane_times)
             same_parent = parent_ids[older] == parent_ids[older + 1]
             single[lanes[~same_parent]] = older[~same_parent]
             lanes = lanes[same_parent]
@@ -141,7 +180,7 @@ def sample_batch(
                 ratio = (lane_times[same_parent] - one_stamp).astype(np.float64) / (
                     stamps[older + 1] - one_stamp
                 ).astype(np.float64)
-                values[lanes] = _interpolate(columns, older, ratio)
+                values[lanes] = _interpolate(columns, slerp, older, ratio)
                 parents[lanes] = parent_ids[older]
                 single[lanes] = -2
     chosen = single >= 0
@@ -172,6 +211,14 @@ def batch_walk(
     full = (ending == _ENDING_NONE) & ~failed
     ending[full] = _ENDING_FULL
 
+    if (
+        full.all()
+        and tgt_t.shape[0] == 1
+        and not tgt_t.any()
+        and np.array_equal(tgt_q, _IDENTITY_ROW)
+    ):
+        # Every lane met the target as the top: the inverse of an identity changes nothing.
+        return _full(src_t, count), _full(src_q, count), failed
     inverse_q = tgt_q * np.array([-1.0, -1.0, -1.0, 1.0])
     inverse_t = rotate_vector_batch(inverse_q, -tgt_t)
     if full.all():
@@ -278,8 +325,7 @@ def _side_walk(
                 continue
             quats = values[:, 3:]
             if lanes is None:
-                acc_t = rotate_vector_batch(quats, acc_t) + values[:, :3]
-                acc_q = quat_multiply_batch(quats, acc_q)
+                acc_t, acc_q = _accumulate(quats, values[:, :3], acc_t, acc_q)
                 frame[:] = parents
                 if source_side:
                     top[:] = frame_id
@@ -288,8 +334,9 @@ def _side_walk(
                     acc_t = np.repeat(acc_t, count, axis=0)
                 if acc_q.shape[0] != count:
                     acc_q = np.repeat(acc_q, count, axis=0)
-                acc_t[lanes] = rotate_vector_batch(quats, acc_t[lanes]) + values[:, :3]
-                acc_q[lanes] = quat_multiply_batch(quats, acc_q[lanes])
+                acc_t[lanes], acc_q[lanes] = _accumulate(
+                    quats, values[:, :3], acc_t[lanes], acc_q[lanes]
+                )
                 frame[lanes] = parents
                 if source_side:
                     top[lanes] = frame_id

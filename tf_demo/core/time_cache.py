@@ -148,7 +148,13 @@ class TimeCache:
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
         self.latest: tuple[int, int] = (0, 0)
         self._arrays: (
-            tuple[int, npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int64]]
+            tuple[
+                int,
+                npt.NDArray[np.int64],
+                npt.NDArray[np.float64],
+                npt.NDArray[np.int64],
+                npt.NDArray[np.float64],
+            ]
             | None
         ) = None
 
@@ -358,24 +364,37 @@ class TimeCache:
 
     def arrays(
         self,
-    ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    ) -> tuple[
+        npt.NDArray[np.int64],
+        npt.NDArray[np.float64],
+        npt.NDArray[np.int64],
+        npt.NDArray[np.float64],
+    ]:
         """
         Return the live samples as numpy arrays, ascending by stamp.
 
-        :returns: stamps ``(K,)``, values ``(7, K)`` (one contiguous row per component:
-            tx, ty, tz, qx, qy, qz, qw) and parent ids ``(K,)``.  Cached until the next change;
-            treat them as read-only.
+        :returns: stamps ``(K,)``; values ``(7, K)`` (one contiguous row per component: tx, ty,
+            tz, qx, qy, qz, qw); parent ids ``(K,)``; and per interval ``k`` (between samples
+            ``k`` and ``k + 1``) the slerp constants ``(3, K - 1)``: angle, ``1 / sin(angle)``
+            (0 for a zero angle) and the sign applied to the newer quaternion.  Cached until
+            the next change; treat them as read-only.
         """
         cached = self._arrays
         if cached is not None and cached[0] == self._version:
-            return cached[1], cached[2], cached[3]
+            return cached[1], cached[2], cached[3], cached[4]
         start = self._start
         stamps = np.array(self._stamps[start:], dtype=np.int64)
         table = np.array(self._samples[start:], dtype=np.float64).reshape(-1, 8).T
         values = np.ascontiguousarray(table[:7])
         parents = table[7].astype(np.int64)
-        self._arrays = (self._version, stamps, values, parents)
-        return stamps, values, parents
+        q = values[3:]
+        dot = np.einsum('ij,ij->j', q[:, :-1], q[:, 1:])
+        theta = np.arccos(np.minimum(np.abs(dot), 1.0))
+        with np.errstate(divide='ignore'):
+            inverse_sin = np.where(theta != 0.0, 1.0 / np.sin(theta), 0.0)
+        slerp = np.stack((theta, inverse_sin, np.where(dot < 0, -1.0, 1.0)))
+        self._arrays = (self._version, stamps, values, parents, slerp)
+        return stamps, values, parents, slerp
 
 
 class StaticCache:
