@@ -801,6 +801,7 @@ class DdsNode:
             raise RuntimeError(msg)
 
     def _incompatible_qos_reporter(self, topic: str, *, publisher: bool) -> Callable[[str], None]:
+        # rclpy's default event handlers print the topic as the caller spelled it.
         logger = self._logger
         if publisher:
             text = (
@@ -833,7 +834,7 @@ class DdsNode:
             type_name,
             endpoint_qos,
             f'typehash={type_hash};'.encode(),
-            self._incompatible_qos_reporter(full_topic, publisher=True),
+            self._incompatible_qos_reporter(topic, publisher=True),
         )
         publisher = DdsPublisher(self, msg_type, full_topic, profile, writer)
         with self._lock:
@@ -863,7 +864,7 @@ class DdsNode:
             type_name,
             endpoint_qos,
             f'typehash={type_hash};'.encode(),
-            self._incompatible_qos_reporter(full_topic, publisher=False),
+            self._incompatible_qos_reporter(topic, publisher=False),
         )
         subscription = DdsSubscription(
             self, msg_type, full_topic, callback, qos_profile=profile, reader=reader, raw=raw
