@@ -398,6 +398,7 @@ def build_scenario(choose: Chooser) -> Scenario:
         query_times += [s + step // 2 for s in dynamic_stamps] + [
             s - step // 3 for s in dynamic_stamps
         ]
+    query_times += [s + 1 for s in dynamic_stamps] + [s - 1 for s in dynamic_stamps]  # boundaries
     query_times = [t for t in query_times if t >= 0]
 
     def query() -> Op:
