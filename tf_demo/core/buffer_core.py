@@ -676,8 +676,15 @@ class BufferCore:
                 if cache is not None:
                     time_ns = cache.latest_stamp_ns
             return _IDENTITY_T, _IDENTITY_Q, time_ns
-        target_id = self._validate('lookupTransform argument target_frame', target)
-        source_id = self._validate('lookupTransform argument source_frame', source)
+        ids = self._ids
+        # Names never start with '/' once interned (inserts strip one), except '//x' -> '/x',
+        # which tf2 also refuses here: check the slash before trusting the id.
+        target_id = ids.get(target, 0)
+        if not target_id or target[0] == '/':
+            target_id = self._validate('lookupTransform argument target_frame', target)
+        source_id = ids.get(source, 0)
+        if not source_id or source[0] == '/':
+            source_id = self._validate('lookupTransform argument source_frame', source)
         return self._walk(target_id, source_id, time_ns)
 
     def lookup_transform(self, target: str, source: str, time_ns: int) -> TransformResult:
