@@ -196,6 +196,7 @@ def run(options: argparse.Namespace, ros_args: list[str]) -> int:
     from tf_demo import transport
     from tf_demo.ros.buffer import Buffer
     from tf_demo.ros.transform_listener import TransformListener
+    from tf_demo.transport.clock import Time
 
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGTERM, _interrupt)
@@ -209,7 +210,7 @@ def run(options: argparse.Namespace, ros_args: list[str]) -> int:
 
         def print_once() -> None:
             try:
-                transform = tf_buffer.lookup_transform(options.target, options.source, 0)
+                transform = tf_buffer.lookup_transform(options.target, options.source, Time())
             except TransformException as error:
                 print(format_waiting(options.target, options.source, error), flush=True)
                 return

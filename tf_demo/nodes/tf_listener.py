@@ -34,6 +34,7 @@ from tf_demo.ros.node_helpers import declare_flexible
 from tf_demo.ros.transform_listener import TransformListener
 from tf_demo.transport import Node
 from tf_demo.transport import run_node
+from tf_demo.transport.clock import Time
 
 NODE_NAME = 'tf_listener'
 
@@ -72,7 +73,9 @@ class TfListenerNode(Node):  # type: ignore[misc]  # Node is the backend's class
     def on_timer(self) -> None:
         """Look up the latest transform and log it, or warn why it is not available."""
         try:
-            transform = self.tf_buffer.lookup_transform(self.target_frame, self.source_frame, 0)
+            transform = self.tf_buffer.lookup_transform(
+                self.target_frame, self.source_frame, Time()
+            )
         except TransformException as error:
             self.get_logger().warning(format_failure(self.target_frame, self.source_frame, error))
             return
