@@ -534,3 +534,28 @@ def test_single_sample_answers_exactly_at_its_stamp():
     assert translations.tolist() == [[1.0, 0.0, 0.0]]
     with pytest.raises(NoDataForExtrapolationException):
         core.lookup_transform('a', 'b', 2 * S + 1)
+
+
+def test_deep_and_wide_trees_like_tf2_speed_test():
+    """tf2's speed_test shapes: a 100-link chain and a 100-child star, at time 0 and inside."""
+    core = BufferCore()
+    for index in range(100):
+        for stamp in (S, 2 * S):
+            core.set_transform(
+                f'chain{index}',
+                f'chain{index + 1}',
+                stamp,
+                (0.01 * stamp / S, 0.0, 0.0),
+                math3d.quat_from_rpy(0.0, 0.0, 0.001 * stamp / S),
+            )
+        core.set_transform('star', f'leaf{index}', 0, (1.0, 0.0, 0.0), IDENTITY, '', True)
+    result = core.lookup_transform('chain0', 'chain100', S + S // 2)
+    expected_t, expected_q = (0.0, 0.0, 0.0), IDENTITY
+    link_t, link_q = (0.015, 0.0, 0.0), math3d.quat_from_rpy(0.0, 0.0, 0.0015)
+    for _ in range(100):
+        expected_t, expected_q = math3d.compose(expected_t, expected_q, link_t, link_q)
+    assert result.translation == pytest.approx(expected_t, abs=1e-9)
+    assert result.rotation == pytest.approx(expected_q, abs=1e-9)
+    assert core.lookup_transform('chain0', 'chain100', 0).stamp_ns == 2 * S
+    assert core.lookup_transform('leaf3', 'leaf97', 0).translation == (0.0, 0.0, 0.0)
+    assert core.lookup_transform('leaf3', 'leaf97', 5 * S).stamp_ns == 5 * S
