@@ -503,3 +503,46 @@ def test_lookup_transforms_equals_single_lookups(history: History, data: st.Data
         assert isinstance(single, TransformResult)
         _assert_vec_close(tuple(translations[row]), tuple(single.translation))
         _assert_same_rotation(tuple(rotations[row]), tuple(single.rotation))
+
+
+def _answers(scenario: tfst.Scenario, offset: int) -> list[object]:
+    """Run a scenario's inserts and lookups with every non-zero stamp shifted by ``offset``."""
+
+    def shift(stamp: int) -> int:
+        return stamp + offset if stamp else 0
+
+    core = _quiet_core(scenario['cache_time_ns'])
+    answers: list[object] = []
+    for op in scenario['ops']:
+        if op[0] == 'set':
+            core.set_transform(
+                op[1], op[2], shift(op[3]), tuple(op[4]), tuple(op[5]), op[6], op[7]
+            )
+        elif op[0] == 'clear':
+            core.clear()
+        elif op[0] == 'lookup':
+            try:
+                result = core.lookup_transform(op[1], op[2], shift(op[3]))
+                answers.append((result.translation, result.rotation, result.stamp_ns))
+            except TransformException as exc:
+                answers.append(type(exc))
+    return answers
+
+
+@given(tfst.scenarios(), st.sampled_from([10**9, 1_700_000_000 * SECOND, 2**62]))
+@tfst.profile_settings(100)
+def test_shifting_every_stamp_changes_nothing_but_the_stamps(
+    scenario: tfst.Scenario, offset: int
+) -> None:
+    """Scenarios at epoch-sized stamps (beyond what the oracle can take) give the same answers."""
+    assume(all(op[3] != 0 for op in scenario['ops'] if op[0] == 'set' and not op[7]))
+    base = _answers(scenario, 0)
+    shifted = _answers(scenario, offset)
+    assert len(base) == len(shifted)
+    for before, after in zip(base, shifted, strict=True):
+        if isinstance(before, tuple) and isinstance(after, tuple):
+            _assert_vec_close(after[0], before[0], 1e-9)
+            _assert_same_rotation(after[1], before[1], 1e-9)
+            assert after[2] == (before[2] + offset if before[2] else 0)
+        else:
+            assert after == before
