@@ -34,7 +34,7 @@ found with the installed oracle (checked against ros2/geometry2 where a source w
 * neutralised by the generator: Noetic prunes right after an insert where Jazzy lags one insert,
   so the newest sample is re-sent before queries (:func:`strategies.with_prune_flushes`).
 
-The dedicated tests at the end check three of these differences against the oracle directly.
+The dedicated tests at the end check four of these differences against the oracle directly.
 """
 
 from __future__ import annotations
@@ -585,3 +585,22 @@ def test_non_unit_quaternion_is_normalised_where_ros1_rejects_it(oracle: Oracle)
     assert core.set_transform('a', 'b', second, (1.0, 2.0, 3.0), (raw[0], raw[1], raw[2], raw[3]))
     ours = _run_op(core, ['lookup', 'a', 'b', 0])
     assert compare(['lookup'], ours, accepted[-1]) is None
+
+
+def test_static_insert_replaces_a_dynamic_cache_where_ros1_keeps_it(oracle: Oracle) -> None:
+    """A static insert on a dynamic link switches the cache kind (spec §1.2); Noetic does not."""
+    second = 1_000_000_000
+    ops: list[list[Any]] = [
+        ['set', 'a', 'b', 1 * second, [1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0], 'x', False],
+        ['set', 'a', 'b', 2 * second, [2.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0], 'x', False],
+        ['set', 'a', 'b', 0, [5.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0], 'x', True],
+        ['lookup', 'a', 'b', 1 * second],
+    ]
+    theirs = oracle.run([{'cache_time_ns': 10 * second, 'ops': ops}])[0][-1]
+    assert theirs is not None
+    assert theirs['t'] == [1.0, 0.0, 0.0]  # ROS 1: the dynamic history is still answered
+    core = BufferCore(10 * second, log=lambda level, text: None)
+    for op in ops[:3]:
+        _run_op(core, op)
+    assert core.lookup_transform('a', 'b', 1 * second).translation[0] == 5.0
+    assert core.lookup_transform('a', 'b', 7 * second).translation[0] == 5.0
