@@ -249,3 +249,12 @@ def test_publisher_restart_is_not_a_fight():
         for o in stream('odom', 'base_link', pub='p2')
     ]
     assert diagnose([static('map', 'odom'), *first, *second]) == []
+
+
+def test_qos_mismatch_is_reported_even_without_data():
+    """Publishers that never matched the listener are named with tf2's QoS as the fix."""
+    findings = diagnose([], unmatched_publishers={'/tf_static': 2})
+    assert kinds(findings) == ['no_data', 'qos_mismatch']
+    finding = next(f for f in findings if f.kind == 'qos_mismatch')
+    assert finding.message.startswith('2 publishers on /tf_static do not match')
+    assert 'TRANSIENT_LOCAL' in finding.fix

@@ -426,6 +426,22 @@ def test_doctor_names_two_publishers_of_one_frame(spawn, peers):
     assert '2 different publishers send it' in fights[0]['message']
 
 
+def test_doctor_finds_publishers_with_incompatible_qos(spawn, peers):
+    """A VOLATILE /tf_static and a BEST_EFFORT /tf publisher are in the graph but unmatched."""
+    peers(static('map', 'odom'))
+    peers(
+        static('odom', 'lost', group='volatile') | {'volatile': True},
+        dynamic('odom', 'gone', rate=20.0, group='be', best_effort=True),
+    )
+    code, report = doctor(spawn)
+    found = {
+        f['message'].split(' do')[0] for f in report['findings'] if f['kind'] == 'qos_mismatch'
+    }
+    assert code == 1
+    assert found == {'1 publisher on /tf', '1 publisher on /tf_static'}
+    assert report['summary']['frames'] == 2
+
+
 # --- tf_saver / tf_loader -----------------------------------------------------------------------
 
 

@@ -16,11 +16,12 @@
 A test peer that publishes a tf scenario given as JSON (faults included), until SIGINT/SIGTERM.
 
 Each entry: ``{"parent", "child", "t": [x, y, z], "q": [x, y, z, w], "static": bool,
-"group": name, "rate": Hz, "stamp_offset": seconds, "zero_stamp": bool, "values": [[x, y, z],
-...]}``. Static entries of one ``group`` share a latched broadcaster (a separate node per group,
-so two groups are two publishers); dynamic entries are sent at ``rate`` with stamp now +
-``stamp_offset`` and cycle through ``values`` when given. Prints ``ready`` once everything was
-sent the first time.
+"group": name, "rate": Hz, "stamp_offset": seconds, "zero_stamp": bool,
+"values": [[x, y, z], ...], "volatile": bool, "best_effort": bool}``. Static entries of one
+``group`` share a latched broadcaster (a separate node per group, so two groups are two
+publishers); dynamic entries are sent at ``rate`` with stamp now + ``stamp_offset`` and cycle
+through ``values`` when given. ``volatile``/``best_effort`` break tf2's QoS on purpose. Prints
+``ready`` once everything was sent the first time.
 """
 
 import json
@@ -33,6 +34,9 @@ from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.ros import StaticTransformBroadcaster
 from tf_demo.ros import TransformBroadcaster
 from tf_demo.transport.messages import geometry_msgs
+from tf_demo.transport.qos import DurabilityPolicy
+from tf_demo.transport.qos import QoSProfile
+from tf_demo.transport.qos import ReliabilityPolicy
 
 
 def main():
@@ -63,14 +67,20 @@ def main():
         group = entry.get('group', 'main')
         if entry.get('static', False):
             if group not in static_broadcasters:
-                static_broadcasters[group] = StaticTransformBroadcaster(node_for(group))
+                qos = None
+                if entry.get('volatile'):
+                    qos = QoSProfile(depth=1, durability=DurabilityPolicy.VOLATILE)
+                static_broadcasters[group] = StaticTransformBroadcaster(node_for(group), qos)
             now = node_for(group).get_clock().now().nanoseconds
             static_broadcasters[group].send_transform(
                 message(entry, now, entry.get('t', [0, 0, 0]))
             )
         else:
             if group not in dynamic_broadcasters:
-                dynamic_broadcasters[group] = TransformBroadcaster(node_for(group))
+                qos = None
+                if entry.get('best_effort'):
+                    qos = QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT)
+                dynamic_broadcasters[group] = TransformBroadcaster(node_for(group), qos)
             dynamic.append(entry)
     print('ready', flush=True)
     next_due = [0.0] * len(dynamic)

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable
+from collections.abc import Mapping
 from collections.abc import Sequence
 from dataclasses import dataclass
 from dataclasses import field
@@ -225,6 +226,7 @@ def diagnose(
     frames: Sequence[str] = (),
     check_timing: bool = True,
     thresholds: Thresholds | None = None,
+    unmatched_publishers: Mapping[str, int] | None = None,
 ) -> list[Finding]:
     """
     Find every tf problem the observations show.
@@ -234,10 +236,12 @@ def diagnose(
     :param frames: frames the user wants to use (``--frames``): each must exist and all must be
         connected.
     :param check_timing: False for snapshots, which carry no reception times.
+    :param unmatched_publishers: per topic, publishers seen in the graph whose QoS never matched
+        the listener (see ``TfRecorder.unmatched_publishers``).
     :return: findings, errors first, in a stable order.
     """
     limits = thresholds or Thresholds()
-    findings: list[Finding] = []
+    findings: list[Finding] = _qos_mismatches(unmatched_publishers or {})
     if not observations or not any(o.transforms for o in observations):
         findings.append(
             Finding(
@@ -283,6 +287,31 @@ def diagnose(
     order = {'error': 0, 'warning': 1, 'info': 2}
     findings.sort(key=lambda f: order[f.severity])
     return findings
+
+
+_QOS_FIX = {
+    TF_STATIC_TOPIC: 'Publish static transforms with StaticTransformBroadcaster (or QoS depth 1, '
+    'RELIABLE, TRANSIENT_LOCAL); a VOLATILE /tf_static publisher never reaches tf listeners.',
+    TF_TOPIC: "Publish /tf with RELIABLE reliability (TransformBroadcaster's default); tf "
+    'listeners request reliable delivery, so a BEST_EFFORT /tf publisher never reaches them.',
+}
+
+
+def _qos_mismatches(unmatched: Mapping[str, int]) -> list[Finding]:
+    return [
+        Finding(
+            'qos_mismatch',
+            'error',
+            (),
+            f'{count} publisher{"s" if count != 1 else ""} on {topic} '
+            f"{'do' if count != 1 else 'does'} not match tf2's listener QoS, so "
+            'neither this tool nor any tf listener receives anything from '
+            f'{"them" if count != 1 else "it"} (incompatible QoS).',
+            _QOS_FIX.get(topic, "Use the QoS of tf2's broadcasters."),
+        )
+        for topic, count in sorted(unmatched.items())
+        if count > 0
+    ]
 
 
 def _missing_frames(frames: Sequence[str], known: set[str]) -> list[Finding]:

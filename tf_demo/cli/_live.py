@@ -54,6 +54,7 @@ class TfRecorder:
         from tf_demo.transport.qos import DynamicListenerQoS
         from tf_demo.transport.qos import StaticListenerQoS
 
+        self._node = node
         self._clock = node.get_clock()
         self._lock = threading.Lock()
         self._observations: list[Observation] = []
@@ -116,6 +117,28 @@ class TfRecorder:
                 self.dropped += 1
         if self._on_message is not None:
             self._on_message(observation)
+
+    def unmatched_publishers(self) -> dict[str, int]:
+        """
+        Count publishers on each topic that exist in the graph but never matched this listener.
+
+        A /tf_static publisher without transient-local durability, or a best-effort /tf
+        publisher, is incompatible with tf2's listener QoS: it shows up in the graph but its
+        data never arrives. Returns ``{topic: count}`` for topics with such publishers (empty
+        when the backend cannot tell).
+        """
+        result: dict[str, int] = {}
+        for topic, subscription in zip(
+            (TF_TOPIC, TF_STATIC_TOPIC), self._subscriptions, strict=True
+        ):
+            try:
+                in_graph = int(self._node.count_publishers(subscription.topic_name))
+                matched = int(subscription.get_publisher_count())
+            except (AttributeError, TypeError, ValueError):
+                return {}
+            if in_graph > matched:
+                result[topic] = in_graph - matched
+        return result
 
     def observations(self) -> list[Observation]:
         """Return a copy of everything recorded so far."""

@@ -78,9 +78,14 @@ def _report(
     *,
     timing: bool,
     listen_ns: int,
+    unmatched: dict[str, int] | None = None,
 ) -> int:
     findings = diagnose(
-        observations, listen_ns=listen_ns, frames=options.frames, check_timing=timing
+        observations,
+        listen_ns=listen_ns,
+        frames=options.frames,
+        check_timing=timing,
+        unmatched_publishers=unmatched,
     )
     summary = summarize(observations)
     if options.json:
@@ -106,6 +111,7 @@ def _listen_and_report(options: argparse.Namespace) -> int:
             f'listened {options.wait_time:g} s',
             timing=True,
             listen_ns=listen_ns,
+            unmatched=recorder.unmatched_publishers(),
         )
     finally:
         node.destroy_node()
