@@ -25,7 +25,8 @@ likely missing link, such as odom→base_link), frames with two parents or publi
 frame on both /tf and /tf_static, stamps far in the future or past (clock or use_sim_time
 mismatch), data too sparse for lookups or streams that stopped, loops, REP 105 order, frame ids
 with a leading '/', and publishers whose QoS never matches tf2's listeners. Exit code 0 when
-healthy, 1 when problems were found, 2 for bad arguments. The analysis is :func:`tf_demo.cli._doctor.diagnose`.
+healthy, 1 when problems were found, 2 for bad arguments. The analysis is
+:func:`tf_demo.cli._doctor.diagnose`.
 """
 
 from __future__ import annotations
