@@ -39,7 +39,7 @@ from tf_demo.urdf import parse_xacro_args
 from tf_demo.urdf import RobotModel
 from tf_demo.urdf import UrdfError
 
-__all__ = ['FreeJoint', 'JointStateTable', 'main']
+__all__ = ['FreeJoint', 'JointStateTable', 'joint_state_message', 'main']
 
 NODE_NAME = 'joint_state_publisher'
 
@@ -378,12 +378,32 @@ def _build_node_class() -> type:
             fields = self._table.message_fields()
             if fields is None:
                 return
-            message = sensor_msgs.JointState()
-            message.header.stamp = self.get_clock().now().to_msg()
-            message.name, message.position, message.velocity, message.effort = fields
-            self._pub.publish(message)
+            stamp = self.get_clock().now().to_msg()
+            self._pub.publish(joint_state_message(sensor_msgs.JointState, stamp, fields))
 
     return JointStatePublisher
+
+
+def joint_state_message(
+    joint_state_type: type,
+    stamp: Any,
+    fields: tuple[list[str], list[float], list[float], list[float]],
+) -> Any:
+    """
+    Build the world's ``sensor_msgs/JointState`` from :meth:`JointStateTable.message_fields`.
+
+    Field types are what rclpy's generated setters require (``str`` names, ``float`` values,
+    a ``builtin_interfaces/Time`` stamp of the same world), so the message also passes with
+    ``ROS_PYTHON_CHECK_FIELDS=1``.
+    """
+    names, position, velocity, effort = fields
+    message = joint_state_type()
+    message.header.stamp = stamp
+    message.name = [str(name) for name in names]
+    message.position = [float(value) for value in position]
+    message.velocity = [float(value) for value in velocity]
+    message.effort = [float(value) for value in effort]
+    return message
 
 
 def _urdf_file_argument(args: Sequence[str]) -> str | None:
