@@ -258,3 +258,23 @@ def test_qos_mismatch_is_reported_even_without_data():
     finding = next(f for f in findings if f.kind == 'qos_mismatch')
     assert finding.message.startswith('2 publishers on /tf_static do not match')
     assert 'TRANSIENT_LOCAL' in finding.fix
+
+
+def test_text_report_golden():
+    """The text report wraps at 99 columns, lists each tree on its own line, and counts."""
+    observations = [static('map', 'odom'), static('base_link', 'laser')]
+    report = format_report(diagnose(observations), summarize(observations), 'file.yaml')
+    assert report == (
+        'tf_doctor: file.yaml: 2 messages, 4 frames, 2 trees.\n'
+        '\n'
+        'ERROR [disconnected] The frames form 2 separate trees; lookups between trees fail:\n'
+        '    tree 1 (root base_link): base_link, laser\n'
+        '    tree 2 (root map): map, odom\n'
+        '  Fix: The likely missing link is odom→base_link, published by the odometry source '
+        '(base driver,\n'
+        '    diff-drive controller or robot_localization). Start that publisher, or for a fixed '
+        'offset run\n'
+        '    static_transform_publisher --frame-id odom --child-frame-id base_link\n'
+        '\n'
+        'Found 1 error and 0 warnings.\n'
+    )

@@ -35,6 +35,7 @@ import difflib
 import itertools
 import json
 import statistics
+import textwrap
 
 from tf_demo.cli._snapshot import find_cycle
 from tf_demo.cli._snapshot import Snapshot
@@ -200,12 +201,11 @@ def _missing_link(root: str, island_of: dict[str, int], own: int) -> str | None:
     return None
 
 
+_ODOMETRY = 'the odometry source (base driver, diff-drive controller or robot_localization)'
 _LINK_PUBLISHERS = {
-    'map→odom': 'a localization or SLAM node (AMCL, slam_toolbox, robot_localization)',
-    'odom→base_link': 'the odometry source (the base driver, a diff-drive controller or '
-    'robot_localization)',
-    'odom→base_footprint': 'the odometry source (the base driver, a diff-drive controller or '
-    'robot_localization)',
+    'map→odom': 'localization or SLAM (AMCL, slam_toolbox, robot_localization)',
+    'odom→base_link': _ODOMETRY,
+    'odom→base_footprint': _ODOMETRY,
     'earth→map': 'a map server or a static_transform_publisher',
 }
 
@@ -453,28 +453,25 @@ def _disconnected(parent_of: dict[str, str], frames: Sequence[str]) -> list[Find
         link = _missing_link(root, island_of, index)
         if link is not None:
             links.append(link)
-    message = f'The frames form {len(islands)} separate trees; lookups between trees fail: '
-    message += '; '.join(lines) + '.'
+    message = f'The frames form {len(islands)} separate trees; lookups between trees fail:\n'
+    message += '\n'.join(lines)
     asked = [f for f in frames if f in island_of]
     if len({island_of[f] for f in asked}) > 1:
-        message += ' The frames you asked about are in different trees: ' + ', '.join(
+        message += '\nThe frames you asked about are in different trees: ' + ', '.join(
             f"'{f}' in tree {island_of[f] + 1}" for f in asked
         )
         message += '.'
     if links:
         fix = 'The likely missing link' + ('s are ' if len(links) > 1 else ' is ')
         fix += ', '.join(
-            link
-            + (
-                f' (normally published by {_LINK_PUBLISHERS[link]})'
-                if link in _LINK_PUBLISHERS
-                else ''
-            )
+            link + (f', published by {_LINK_PUBLISHERS[link]}' if link in _LINK_PUBLISHERS else '')
             for link in links
         )
-        fix += '. Start that publisher, or for a fixed offset: static_transform_publisher '
         first_parent, first_child = links[0].split('→')
-        fix += f'--frame-id {first_parent} --child-frame-id {first_child}.'
+        fix += (
+            '. Start that publisher, or for a fixed offset run static_transform_publisher '
+            f'--frame-id {first_parent} --child-frame-id {first_child}'
+        )
     else:
         roots = [_root(members[0], parent_of) for members in islands]
         fix = (
@@ -694,6 +691,24 @@ def summarize(observations: Sequence[Observation]) -> dict[str, int]:
     }
 
 
+def _wrapped(text: str, first: str, indent: str, width: int = 99) -> list[str]:
+    lines: list[str] = []
+    for index, paragraph in enumerate(text.split('\n')):
+        lead = first if index == 0 else indent
+        lines.extend(
+            textwrap.wrap(
+                paragraph,
+                width=width,
+                initial_indent=lead,
+                subsequent_indent=indent,
+                break_on_hyphens=False,
+                break_long_words=False,
+            )
+            or [lead]
+        )
+    return lines
+
+
 def format_report(findings: Sequence[Finding], summary: dict[str, int], source: str) -> str:
     """Format the plain-language report: each finding with its fix, then the verdict."""
     lines = [
@@ -702,8 +717,10 @@ def format_report(findings: Sequence[Finding], summary: dict[str, int], source: 
     ]
     for finding in findings:
         lines.append('')
-        lines.append(f'{finding.severity.upper()} [{finding.kind}] {finding.message}')
-        lines.append(f'  Fix: {finding.fix}')
+        lines.extend(
+            _wrapped(finding.message, f'{finding.severity.upper()} [{finding.kind}] ', '    ')
+        )
+        lines.extend(_wrapped(finding.fix, '  Fix: ', '    '))
     problems = [f for f in findings if f.severity != 'info']
     lines.append('')
     if problems:
