@@ -841,6 +841,43 @@ def test_both_backends_offer_the_names_the_package_re_exports() -> None:
     assert all(hasattr(dds_backend, name) for name in forwarded)
 
 
+#: Public names of the node-API modules that stay tf_demo's own in the rclpy world.
+TF_DEMO_ONLY_NAMES = {
+    'qos': {'DynamicBroadcasterQoS', 'DynamicListenerQoS', 'StaticBroadcasterQoS',
+            'StaticListenerQoS', 'validate_qos_or_depth'},  # tf2_ros's, built on rclpy's classes
+    'clock': {'CLOCK_TOPIC', 'USE_SIM_TIME_NAME'},
+    'parameters': {'ParameterStore'},
+    'logging': {'DEFAULT_OUTPUT_FORMAT', 'Logger', 'format_log_line', 'set_default_logger_level'},
+}  # fmt: skip
+
+
+def _exported_names(function_name: str) -> set[str]:
+    """Names an ``*_exports()`` function of rclpy_backend hands over (string literals)."""
+    for statement in _rclpy_backend_tree().body:
+        if isinstance(statement, ast.FunctionDef) and statement.name == function_name:
+            names = set()
+            for node in ast.walk(statement):
+                if isinstance(node, ast.List):
+                    names |= {e.value for e in node.elts if isinstance(e, ast.Constant)}
+                if isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Constant):
+                    names.add(node.slice.value)
+            return names
+    pytest.fail(f'rclpy_backend has no {function_name}()')
+
+
+@pytest.mark.parametrize('module_name', sorted(TF_DEMO_ONLY_NAMES))
+def test_rclpy_world_replaces_every_rclpy_concept_of_the_node_api(module_name: str) -> None:
+    """In the rclpy world each public name of qos/clock/parameters/logging is rclpy's object."""
+    import importlib
+
+    module = importlib.import_module(f'tf_demo.transport.{module_name}')
+    rclpy_concepts = set(module.__all__) - TF_DEMO_ONLY_NAMES[module_name]
+    function = {'qos': 'qos', 'clock': 'clock', 'parameters': 'parameter', 'logging': 'logging'}
+    exported = _exported_names(f'{function[module_name]}_exports')
+    missing = rclpy_concepts - exported
+    assert missing == set(), f'{module_name}: stays tf_demo-only under rclpy: {sorted(missing)}'
+
+
 # --------------------------------------------------------------------------------------------
 # Backend selection with an importable rclpy.
 

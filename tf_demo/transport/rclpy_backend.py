@@ -95,6 +95,8 @@ def clock_exports() -> dict[str, Any]:
 
 def parameter_exports() -> dict[str, Any]:
     """Return rclpy's parameter objects under the names of ``parameters``."""
+    from rcl_interfaces.msg import FloatingPointRange
+    from rcl_interfaces.msg import IntegerRange
     from rcl_interfaces.msg import ParameterDescriptor
     from rcl_interfaces.msg import SetParametersResult
 
@@ -108,6 +110,8 @@ def parameter_exports() -> dict[str, Any]:
     exports['Parameter'] = rclpy.parameter.Parameter
     exports['ParameterType'] = rclpy.parameter.Parameter.Type
     exports['ParameterDescriptor'] = ParameterDescriptor
+    exports['FloatingPointRange'] = FloatingPointRange
+    exports['IntegerRange'] = IntegerRange
     exports['SetParametersResult'] = SetParametersResult
     return exports
 
