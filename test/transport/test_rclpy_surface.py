@@ -855,13 +855,17 @@ def _exported_names(function_name: str) -> set[str]:
     """Names an ``*_exports()`` function of rclpy_backend hands over (string literals)."""
     for statement in _rclpy_backend_tree().body:
         if isinstance(statement, ast.FunctionDef) and statement.name == function_name:
-            names = set()
+            constants: list[ast.expr] = []
             for node in ast.walk(statement):
                 if isinstance(node, ast.List):
-                    names |= {e.value for e in node.elts if isinstance(e, ast.Constant)}
-                if isinstance(node, ast.Subscript) and isinstance(node.slice, ast.Constant):
-                    names.add(node.slice.value)
-            return names
+                    constants.extend(node.elts)
+                if isinstance(node, ast.Subscript):
+                    constants.append(node.slice)
+            return {
+                c.value
+                for c in constants
+                if isinstance(c, ast.Constant) and isinstance(c.value, str)
+            }
     pytest.fail(f'rclpy_backend has no {function_name}()')
 
 
