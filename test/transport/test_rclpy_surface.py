@@ -1017,3 +1017,27 @@ def test_publish_takes_a_message_or_bytes_only(standalone_world: Any) -> None:
     for wrong in (bytearray(data), memoryview(data), 'text'):
         with pytest.raises(TypeError):
             publisher.publish(wrong)
+
+
+@pytest.mark.dds
+def test_rsp_qos_override_parameters_are_read_only_like_rclpys(standalone_world: Any) -> None:
+    """RSP's qos_overrides.* take an override at start and refuse later sets, as in rclpy."""
+    from tf_demo.nodes.robot_state_publisher import _build_node_class
+    from tf_demo.transport.parameters import Parameter
+
+    name = 'qos_overrides./tf.publisher.depth'
+    node = _build_node_class()(
+        parameter_overrides=[
+            Parameter('robot_description', value=ROBOT_URDF),
+            Parameter(name, value=7),
+        ]
+    )
+    try:
+        assert node.get_parameter(name).value == 7
+        assert node.describe_parameter(name).read_only
+        (result,) = node.set_parameters([Parameter(name, value=8)])
+        assert not result.successful
+        assert node.get_parameter(name).value == 7
+        assert node._tf_pub.qos_profile.depth == 7
+    finally:
+        node.destroy_node()

@@ -338,12 +338,22 @@ def _build_node_class() -> type:
         def _qos_with_overrides(
             self, topic: str, entity: str, profile: Any, policies: tuple[str, ...]
         ) -> Any:
-            """Apply ``qos_overrides.<topic>.<entity>.<policy>`` parameters (read at start)."""
+            """
+            Apply ``qos_overrides.<topic>.<entity>.<policy>`` parameters (read at start).
+
+            Declared read-only, as rclpy's ``_declare_qos_parameters`` and rclcpp do: they take
+            effect from overrides (``-p``, params files) only.
+            """
+            from tf_demo.transport.parameters import ParameterDescriptor
+
             for policy in policies:
                 name = f'qos_overrides.{topic}.{entity}.{policy}'
                 current = getattr(profile, policy)
                 default = current if policy == 'depth' else current.name.lower()
-                value = self.declare_parameter(name, default).value
+                descriptor = ParameterDescriptor(
+                    description=f'{policy} for {entity} `{topic}`', read_only=True
+                )
+                value = self.declare_parameter(name, default, descriptor).value
                 try:
                     if policy == 'depth':
                         profile.depth = int(value)
