@@ -192,3 +192,17 @@ def test_frames_yaml_data_for_view_frames():
     assert math.isclose(
         data['base "link"\u00e9']['most_recent_transform'], 1_700_000_000.123456789
     )
+
+
+@pytest.mark.parametrize(
+    'text',
+    [
+        'transforms: ' + '[' * 100_000 + ']' * 100_000,
+        'a: ' + '{a: ' * 5_000 + '1' + '}' * 5_000,
+        '- ' * 50_000 + 'x',
+    ],
+)
+def test_deep_nesting_is_refused_without_recursion_error(text):
+    """Deeply nested YAML is refused with a message instead of a RecursionError."""
+    with pytest.raises(SnapshotError, match=r'^f:1: nesting is deeper than 16 levels$'):
+        parse_snapshot(text, 'f')

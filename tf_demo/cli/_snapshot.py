@@ -35,12 +35,13 @@ Schema, version 1 (keys in this order; ``#`` comments are allowed anywhere)::
         sample_count: 200              # optional, integer >= 0
 
 Rules the reader enforces, each refusal naming the file, the line and the problem: the file exists,
-is at most :data:`MAX_FILE_BYTES` long and is UTF-8 YAML (``yaml.safe_load`` semantics, no
-anchors, aliases, tags or duplicate keys); the version is known; every key is known and of the
-right type; numbers are finite; there are at most :data:`MAX_TRANSFORMS` entries; no frame is its
-own parent, no child appears twice and the parent links have no cycle; ``transform_count`` matches
-(a file cut at an entry boundary is caught here). Nothing is returned unless the whole file is
-valid, so a caller never half-loads a file. Pickle is never used.
+is at most :data:`MAX_FILE_BYTES` long and is UTF-8 YAML (``yaml.safe_load`` semantics, at most
+:data:`MAX_NESTING` levels deep, no anchors, aliases, tags or duplicate keys); the version is
+known; every key is known and of the right type; numbers are finite; there are at most
+:data:`MAX_TRANSFORMS` entries; no frame is its own parent, no child appears twice and the parent
+links have no cycle; ``transform_count`` matches (a file cut at an entry boundary is caught here).
+Nothing is returned unless the whole file is valid, so a caller never half-loads a file. Pickle is
+never used.
 """
 
 from __future__ import annotations
@@ -61,6 +62,7 @@ SCHEMA_VERSION = 1
 MAX_FILE_BYTES = 16 * 1024 * 1024
 MAX_TRANSFORMS = 100_000
 MAX_FRAME_ID_LENGTH = 1024
+MAX_NESTING = 16
 _TOP_KEYS = (SCHEMA_KEY, 'recorded_at', 'transform_count', 'transforms')
 _ENTRY_KEYS = (
     'parent',
@@ -352,12 +354,38 @@ def find_cycle(edges: Iterable[tuple[str, str]]) -> list[str] | None:
     return None
 
 
+_OPENING_TOKENS = (
+    yaml.BlockMappingStartToken,
+    yaml.BlockSequenceStartToken,
+    yaml.FlowMappingStartToken,
+    yaml.FlowSequenceStartToken,
+)
+_CLOSING_TOKENS = (yaml.BlockEndToken, yaml.FlowMappingEndToken, yaml.FlowSequenceEndToken)
+
+
+def _check_nesting(text: str, source: str) -> None:
+    """Refuse nesting deeper than :data:`MAX_NESTING` before the (recursive) composer runs."""
+    depth = 0
+    for token in yaml.scan(text, Loader=yaml.SafeLoader):
+        if isinstance(token, _OPENING_TOKENS):
+            depth += 1
+            if depth > MAX_NESTING:
+                line = token.start_mark.line + 1
+                msg = f'{source}:{line}: nesting is deeper than {MAX_NESTING} levels'
+                raise SnapshotError(msg)
+        elif isinstance(token, _CLOSING_TOKENS):
+            depth -= 1
+
+
 def parse_snapshot(text: str, source: str = '<snapshot>') -> Snapshot:
     """Parse and validate snapshot ``text``; :class:`SnapshotError` names line and problem."""
     if len(text.encode('utf-8', errors='surrogatepass')) > MAX_FILE_BYTES:
         raise SnapshotError(f'{source}: file is larger than {MAX_FILE_BYTES} bytes')
     try:
+        _check_nesting(text, source)
         root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except RecursionError:
+        raise SnapshotError(f'{source}: nesting is too deep') from None
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         line = f':{mark.line + 1}' if mark is not None else ''
