@@ -546,3 +546,34 @@ def test_shifting_every_stamp_changes_nothing_but_the_stamps(
             assert after[2] == (before[2] + offset if before[2] else 0)
         else:
             assert after == before
+
+
+@given(
+    st.lists(st.integers(1, 6), min_size=1, max_size=12),
+    st.randoms(use_true_random=False),
+)
+@tfst.profile_settings(200)
+def test_same_stamp_samples_break_ties_as_tf2_jazzy(grid: list[int], rng: random.Random) -> None:
+    """Ties: the newest-inserted sample answers, except at the oldest stamp (first-inserted).
+
+    Jazzy keeps same-stamp samples with different data (spec §1.2) and orders them newest-inserted
+    first; findClosest returns the front at the newest stamp, the back at the oldest, and the
+    newest-inserted tie (ratio 0) in between (spec §2.2, §10.4).
+    """
+    core = _quiet_core()
+    inserted: dict[int, list[float]] = {}
+    for order, point in enumerate(grid):
+        stamp = point * SECOND
+        x = float(order + 1)  # distinct data, so nothing is an exact duplicate
+        q = (0.0, 0.0, math.sin(order * 0.1), math.cos(order * 0.1))
+        assert core.set_transform('p', 'c', stamp, (x, 0.0, 0.0), q, 'prop')
+        inserted.setdefault(stamp, []).append(x)
+    newest, oldest = max(inserted), min(inserted)
+    probes = list(inserted)
+    rng.shuffle(probes)
+    for stamp in probes:
+        expected = (
+            inserted[stamp][0] if stamp == oldest and stamp != newest else inserted[stamp][-1]
+        )
+        got = core.lookup_transform('p', 'c', stamp).translation[0]
+        assert got == pytest.approx(expected, abs=1e-12), (stamp, inserted)
