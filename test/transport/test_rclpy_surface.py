@@ -965,7 +965,8 @@ def standalone_world(dds_env: dict[str, str]) -> Iterator[Any]:
 
     dds_backend.init()
     yield dds_backend
-    dds_backend.shutdown()
+    if dds_backend.ok():
+        dds_backend.shutdown()
 
 
 def _one_transform_message() -> Any:
@@ -1041,3 +1042,15 @@ def test_rsp_qos_override_parameters_are_read_only_like_rclpys(standalone_world:
         assert node._tf_pub.qos_profile.depth == 7
     finally:
         node.destroy_node()
+
+
+@pytest.mark.dds
+def test_try_shutdown_is_idempotent_like_rclpys(standalone_world: Any) -> None:
+    """transport.try_shutdown() shuts down once and is a no-op afterwards (rclpy.try_shutdown)."""
+    from tf_demo import transport
+
+    assert transport.ok()
+    transport.try_shutdown()
+    assert not transport.ok()
+    transport.try_shutdown()
+    assert not transport.ok()

@@ -61,6 +61,7 @@ __all__ = [
     'spin',
     'spin_once',
     'spin_until_future_complete',
+    'try_shutdown',
 ]
 
 _BACKEND_MODULES = {
@@ -118,6 +119,15 @@ def init(args: Sequence[str] | None = None) -> None:
 def shutdown() -> None:
     """Shut the backend down (nodes and executors stop)."""
     backend_module().shutdown()
+
+
+def try_shutdown() -> None:
+    """Shut the backend down unless it already is (``rclpy.try_shutdown``)."""
+    module = backend_module()
+    if hasattr(module, 'try_shutdown'):
+        module.try_shutdown()
+    elif module.ok():
+        module.shutdown()
 
 
 def ok() -> bool:
