@@ -181,8 +181,15 @@ RCLPY_EXECUTOR: dict[str, list[Param]] = {
 }
 RCLPY_MULTI_THREADED_INIT = _params('num_threads', kw=[('context', None)], num_threads=None)
 
-#: rclpy/rclpy/publisher.py: ``def publish(self, msg: Union[MsgType, bytes]) -> None``.
-RCLPY_PUBLISHER = {'publish': _params('msg')}
+#: rclpy/rclpy/publisher.py: ``def publish(self, msg: Union[MsgType, bytes]) -> None``,
+#: ``def wait_for_all_acked(self, timeout: Duration = Duration(seconds=-1)) -> bool``.
+RCLPY_PUBLISHER = {
+    'publish': _params('msg'),
+    'get_subscription_count': _params(),
+    'wait_for_all_acked': _params('timeout', timeout=ANY),
+}
+#: rclpy/rclpy/subscription.py: ``def get_publisher_count(self) -> int``.
+RCLPY_SUBSCRIPTION = {'get_publisher_count': _params()}
 
 #: rclpy/rclpy/impl/rcutils_logger.py: RcutilsLogger's public methods.
 RCLPY_LOGGER_METHODS = frozenset(
@@ -199,7 +206,13 @@ UNSUPPORTED_RCLPY_PARAMETERS = frozenset(
 #: its test pass, and pytest then reports XPASS as a failure so the mark gets removed).
 FILED_TO_DDS = 'filed to dds by rclpy-audit (requests.md, 09:35 UTC)'
 KNOWN_DIVERGENT = frozenset(
-    {'DdsNode.create_publisher', 'DdsNode.create_subscription', 'DdsNode.create_timer', 'init'}
+    {
+        'DdsNode.create_publisher',
+        'DdsNode.create_subscription',
+        'DdsNode.create_timer',
+        'init',
+        'DdsPublisher.wait_for_all_acked',
+    }
 )
 
 
@@ -285,9 +298,10 @@ def _surface_cases() -> Iterator[Any]:
         ('MultiThreadedExecutor.__init__', dds.MultiThreadedExecutor.__init__,
          RCLPY_MULTI_THREADED_INIT, True)
     )  # fmt: skip
-    cases.append(
-        ('DdsPublisher.publish', dds.DdsPublisher.publish, RCLPY_PUBLISHER['publish'], True)
-    )
+    for name, params in RCLPY_PUBLISHER.items():
+        cases.append((f'DdsPublisher.{name}', getattr(dds.DdsPublisher, name), params, True))
+    for name, params in RCLPY_SUBSCRIPTION.items():
+        cases.append((f'DdsSubscription.{name}', getattr(dds.DdsSubscription, name), params, True))
     for label, function, params, bound in cases:
         marks = (
             [pytest.mark.xfail(strict=True, reason=FILED_TO_DDS)]
