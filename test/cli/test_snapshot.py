@@ -141,7 +141,7 @@ BAD_FILES = [
         ),
         'anchors and aliases',
     ),
-    ('tf_demo_transforms: 1\ntransform_count: 200000\ntransforms: []\n', 'more than 100000'),
+    ('tf_demo_transforms: 1\ntransform_count: 20000\ntransforms: []\n', 'more than 10000'),
 ]
 
 
