@@ -136,7 +136,11 @@ def _monitor(options: argparse.Namespace) -> int:
                     last_log = time.monotonic()
                     node.get_logger().info(format_echo_waiting(framea, frameb, reason))
                 _spin_for(node, TICK_S)
-            chain = core.chain(frameb, 0, framea, 0, frameb)
+            try:
+                chain = core.chain(frameb, 0, framea, 0, frameb)
+            except TransformException as error:
+                node.get_logger().warning(f'Transform Exception {error}')
+                chain = []
             print(f'Gathering data on {framea} -> {frameb} for 10 seconds...', flush=True)
         else:
             print('Gathering data on all frames for 10 seconds...', flush=True)
