@@ -24,8 +24,8 @@ Appendix, each marked ``ROS 1 difference`` where the test maps them, plus differ
 found with the installed oracle (checked against ros2/geometry2 where a source was at hand):
 
 * mapped here: ``%.9f`` times and the stated extrapolation distance in Noetic's texts; the
-  ``/`` and empty-name texts; ``canTransform``'s frame-check texts and order; YAML stamps printed
-  with ``%.3f`` and ``{}`` for an empty buffer;
+  ``/`` and empty-name texts; ``canTransform``'s frame-check texts and order; YAML and DOT times
+  printed with ``%.3f`` and ``{}`` for an empty YAML buffer;
 * avoided by the scenario generator (``tf_demo.testing.strategies.build_scenario``): two samples
   with one stamp on a link, non-unit quaternions, static/dynamic kind switches (Noetic keeps the
   first cache kind), a ``(0, 0, 0, -1)`` sample next to a half turn (slerp's arc follows the
@@ -173,6 +173,8 @@ def _run_op(core: BufferCore, op: list[Any]) -> Result | None:
         return {'text': core.all_frames_as_string()}
     if kind == 'yaml':
         return {'text': core.all_frames_as_yaml()}
+    if kind == 'dot':
+        return {'text': core.all_frames_as_dot(op[1])}
     if kind == 'frames':
         return {'frames': core.frame_ids()}
     try:
@@ -358,6 +360,8 @@ def compare(op: list[Any], ours: Result | None, theirs: Result | None) -> str | 
         return None if ours['ok'] == theirs['ok'] else f'expected {theirs["ok"]}, got {ours["ok"]}'
     if kind == 'yaml':
         return compare_yaml(ours['text'], theirs['text'])
+    if kind == 'dot':
+        return compare_dot(ours['text'], theirs['text'])
     return None if ours == theirs else f'expected {theirs}, got {ours}'
 
 
@@ -386,6 +390,27 @@ def compare_yaml(ours: str, theirs: str) -> str | None:
                 return f'expected {other!r} (to 3 decimals), got {mine!r}'
         elif mine != other:
             return f'expected YAML line {other!r}, got {mine!r}'
+    return None
+
+
+_DOT_TIMES = re.compile(r'(Most recent transform: |Recorded at time: )(-?\d+\.\d+)')
+
+
+def compare_dot(ours: str, theirs: str) -> str | None:
+    """
+    Compare DOT dumps (``all_frames_as_dot``) with their times.
+
+    ROS 1 difference (verified against the oracle; spec §3.8 gives Jazzy's format): Noetic prints
+    "Most recent transform" and "Recorded at time" with ``%.3f``, Jazzy with ``%.6f``; those must
+    agree to three decimals, the rest of the text exactly.
+    """
+    if _DOT_TIMES.sub(r'\1#', ours) != _DOT_TIMES.sub(r'\1#', theirs):
+        return f'expected DOT {theirs!r}, got {ours!r}'
+    for (_, mine), (_, other) in zip(
+        _DOT_TIMES.findall(ours), _DOT_TIMES.findall(theirs), strict=True
+    ):
+        if not re.fullmatch(r'-?\d+\.\d{6}', mine) or abs(float(mine) - float(other)) > 5e-4:
+            return f'expected DOT time {other} (to 3 decimals, printed %.6f), got {mine}'
     return None
 
 

@@ -138,6 +138,7 @@ def test_scenarios_cover_every_operation_and_edge_case() -> None:
         'lct',
         'string',
         'yaml',
+        'dot',
     }
     assert all(seen.values()), seen
 

@@ -36,6 +36,8 @@ A scenario is ``{"cache_time_ns": int, "ops": [op, ...]}``; the operations are:
     result ``{"stamp": ns}`` or an exception object.
 ``["chain", target, target_time_ns, source, source_time_ns, fixed]``
     result ``{"frames": [...]}`` or an exception object.
+``["dot", current_time_ns]``
+    ``{"text": _allFramesAsDot(current_time)}``.
 ``["string"]``, ``["yaml"]`` and ``["frames"]``
     ``{"text": all_frames_as_string()}``, ``{"text": all_frames_as_yaml()}`` and
     ``{"frames": every frame name in id order}``.
@@ -116,6 +118,8 @@ def _run_op(buffer: Any, op: list[Any]) -> dict[str, Any] | None:
         return {'text': buffer.all_frames_as_string()}
     if kind == 'yaml':
         return {'text': buffer.all_frames_as_yaml()}
+    if kind == 'dot':
+        return {'text': buffer._allFramesAsDot(_time(op[1]))}
     if kind == 'frames':
         return {'frames': list(buffer._getFrameStrings())}
     if kind == 'time_lookups':
