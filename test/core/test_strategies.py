@@ -139,6 +139,7 @@ def test_scenarios_cover_every_operation_and_edge_case() -> None:
         'string',
         'yaml',
         'dot',
+        'frames',
     }
     assert all(seen.values()), seen
 

@@ -274,9 +274,9 @@ def build_scenario(choose: Chooser) -> Scenario:
       pruned; ``clear()``;
     * queries at time 0, at exact sample stamps, between samples, outside the data, for unknown,
       empty and ``/``-prefixed names, fixed-frame lookups, ``can_transform``, latest common time,
-      ``all_frames_as_string``, ``all_frames_as_yaml`` and the DOT dump.  No frame-chain
-      queries: Noetic's ``_chainAsVector`` is an older algorithm than Jazzy's (``spec/tf2.md``
-      §3.8 lists Jazzy's verified chains).
+      the frame names, ``all_frames_as_string``, ``all_frames_as_yaml`` and the DOT dump.  No
+      frame-chain queries: Noetic's ``_chainAsVector`` is an older algorithm than Jazzy's
+      (``spec/tf2.md`` §3.8 lists Jazzy's verified chains).
     """
     step = _pick(choose, [1, 1000, 100_000_000, 1_000_000_000, 123_456_789])
     # Stamps stay below 1e6 s: the oracle's Python binding passes times to C++ as double seconds
@@ -423,8 +423,10 @@ def build_scenario(choose: Chooser) -> Scenario:
             return ['can_full', target, time_ns, source, _pick(choose, query_times), query_frame()]
         if roll < 93:
             return ['lct', target, source]
-        if roll < 96:
+        if roll < 95:
             return ['string']
+        if roll < 96:
+            return ['frames']
         if roll < 98:
             return ['yaml']
         return ['dot', _pick(choose, [0, time_ns])]
