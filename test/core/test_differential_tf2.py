@@ -297,9 +297,9 @@ def _extrapolation_subclass(text: str) -> type[ExtrapolationException]:
 def _expected_classes(name: str, text: str) -> tuple[type[TransformException], ...]:
     """Return the exception classes of ours that match an oracle class name."""
     if name == 'ExtrapolationException':
-        # tf2_py raises one ExtrapolationException for every case (spec §4.1); ours is the
-        # subclass for the error code behind the text (spec §3.2), or the base class.
-        return (_extrapolation_subclass(text), ExtrapolationException)
+        # tf2_py raises one ExtrapolationException for every case (spec §4.1); ours raises the
+        # subclass for the error code behind the text (spec §3.2, issue 2: past/future/no-data).
+        return (_extrapolation_subclass(text),)
     if name == 'TransformException':
         # tf2_py's get_latest_common_time raises plain TransformException for connectivity and
         # loop errors (spec §4.1); the C++ error codes behind them are CONNECTIVITY and LOOKUP.
