@@ -1148,3 +1148,42 @@ def test_tutorial_nodes_publish_rclpy_valid_messages(published: list[Any], tmp_p
             assert rclpy_field_violations(obj) == [], repr(obj)
     static = published[0]
     assert [t.transform.translation.x for t in static.transforms] == [1.0]
+
+
+STOPPED_WHILE_STARTING = """
+import os, signal, sys
+from tf_demo.transport import Node, run_node
+
+class Slow(Node):
+    def __init__(self):
+        super().__init__('slow_start')
+        os.kill(os.getpid(), signal.{signal_name})  # Ctrl-C / SIGTERM while the node starts
+        print('constructed', flush=True)
+
+    def destroy_node(self):
+        print('destroyed', flush=True)
+        super().destroy_node()
+
+sys.exit(run_node(Slow, ['slow']))
+"""
+
+
+@pytest.mark.dds
+@pytest.mark.parametrize('signal_name', ['SIGINT', 'SIGTERM'])
+def test_a_stop_signal_while_the_node_starts_ends_cleanly(
+    dds_env: dict[str, str], tmp_path: Path, signal_name: str
+) -> None:
+    """run_node's handlers are in place before init and construction: exit 0, node destroyed."""
+    script = tmp_path / 'slow.py'
+    script.write_text(STOPPED_WHILE_STARTING.replace('{signal_name}', signal_name), 'utf-8')
+    completed = subprocess.run(
+        [sys.executable, str(script)],
+        env={**dds_env, 'PYTHONPATH': str(REPO_ROOT)},
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.split() == ['constructed', 'destroyed']
+    assert 'Traceback' not in completed.stderr
