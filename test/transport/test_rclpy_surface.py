@@ -1187,3 +1187,22 @@ def test_a_stop_signal_while_the_node_starts_ends_cleanly(
     assert completed.returncode == 0, completed.stderr
     assert completed.stdout.split() == ['constructed', 'destroyed']
     assert 'Traceback' not in completed.stderr
+
+
+#: rclpy/rclpy/qos.py (Jazzy): QoSPresetProfiles members in order; BEST_AVAILABLE is left out
+#: on purpose (the standalone backend refuses BEST_AVAILABLE policies).
+RCLPY_QOS_PRESETS = [
+    'UNKNOWN', 'DEFAULT', 'SYSTEM_DEFAULT', 'SENSOR_DATA', 'SERVICES_DEFAULT', 'PARAMETERS',
+    'PARAMETER_EVENTS', 'ACTION_STATUS_DEFAULT',
+]  # fmt: skip
+
+
+def test_qos_presets_match_rclpys_including_aliases() -> None:
+    """Same preset names and order; equal profiles alias each other as in rclpy's Enum."""
+    from tf_demo.transport import qos
+
+    assert list(qos.QoSPresetProfiles.__members__) == RCLPY_QOS_PRESETS
+    assert qos.QoSPresetProfiles.SERVICES_DEFAULT is qos.QoSPresetProfiles.DEFAULT
+    assert qos.QoSPresetProfiles.get_from_short_key('default') == qos.QoSProfile(depth=10)
+    status = qos.QoSPresetProfiles.ACTION_STATUS_DEFAULT.value
+    assert (status.depth, status.durability) == (1, qos.DurabilityPolicy.TRANSIENT_LOCAL)

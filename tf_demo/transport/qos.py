@@ -50,6 +50,8 @@ __all__ = [
     'ReliabilityPolicy',
     'StaticBroadcasterQoS',
     'StaticListenerQoS',
+    'qos_profile_action_status_default',
+    'qos_profile_default',
     'qos_profile_parameter_events',
     'qos_profile_parameters',
     'qos_profile_rosout_default',
@@ -335,6 +337,12 @@ qos_profile_unknown = QoSProfile(
     durability=DurabilityPolicy.UNKNOWN,
     liveliness=LivelinessPolicy.UNKNOWN,
 )
+qos_profile_default = QoSProfile(
+    history=HistoryPolicy.KEEP_LAST,
+    depth=10,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.VOLATILE,
+)
 qos_profile_system_default = QoSProfile(
     history=HistoryPolicy.SYSTEM_DEFAULT,
     depth=0,
@@ -373,16 +381,31 @@ qos_profile_rosout_default = QoSProfile(
     lifespan=Duration(seconds=10),
 )
 
+qos_profile_action_status_default = QoSProfile(
+    history=HistoryPolicy.KEEP_LAST,
+    depth=1,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+)
+
 
 class QoSPresetProfiles(Enum):
-    """The named presets, as rclpy's enum of the same name."""
+    """
+    The named presets, as rclpy's enum of the same name (same members, same order).
+
+    Equal profiles are aliases, as in rclpy (e.g. ``SERVICES_DEFAULT`` is ``DEFAULT``).
+    rclpy's ``BEST_AVAILABLE`` preset is left out: the standalone backend refuses
+    BEST_AVAILABLE policies.
+    """
 
     UNKNOWN = qos_profile_unknown
+    DEFAULT = qos_profile_default
     SYSTEM_DEFAULT = qos_profile_system_default
     SENSOR_DATA = qos_profile_sensor_data
     SERVICES_DEFAULT = qos_profile_services_default
     PARAMETERS = qos_profile_parameters
     PARAMETER_EVENTS = qos_profile_parameter_events
+    ACTION_STATUS_DEFAULT = qos_profile_action_status_default
 
     @classmethod
     def short_keys(cls) -> list[str]:
