@@ -1202,7 +1202,7 @@ def test_qos_presets_match_rclpys_including_aliases() -> None:
     from tf_demo.transport import qos
 
     assert list(qos.QoSPresetProfiles.__members__) == RCLPY_QOS_PRESETS
-    assert qos.QoSPresetProfiles.SERVICES_DEFAULT is qos.QoSPresetProfiles.DEFAULT
+    assert qos.QoSPresetProfiles['SERVICES_DEFAULT'].name == 'DEFAULT'  # an alias, as in rclpy
     assert qos.QoSPresetProfiles.get_from_short_key('default') == qos.QoSProfile(depth=10)
     status = qos.QoSPresetProfiles.ACTION_STATUS_DEFAULT.value
     assert (status.depth, status.durability) == (1, qos.DurabilityPolicy.TRANSIENT_LOCAL)
