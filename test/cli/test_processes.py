@@ -294,6 +294,16 @@ def test_echo_logs_the_waiting_line(spawn):
     )
 
 
+def test_echo_stops_quietly_when_the_reader_goes_away(spawn, peers):
+    """Like `tf_echo a b | head -1`: a closed stdout ends tf_echo with 0 and no traceback."""
+    peers(static('base', 'laser'))
+    echo = spawn.start('tf_echo', 'base', 'laser', '50')
+    read_until(echo, 'At time')
+    echo.stdout.close()
+    assert echo.wait(timeout=30) == 0
+    assert 'Traceback' not in echo.stderr.read()
+
+
 # --- view_frames ---------------------------------------------------------------------------------
 
 

@@ -228,6 +228,12 @@ def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int
         return body()
     except KeyboardInterrupt:
         return 0
+    except BrokenPipeError:
+        # The reader went away (``tf_echo a b | head``): stop quietly, like a C++ tool on SIGPIPE.
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except ToolError as error:
         print_error(tool, str(error))
         return 1
