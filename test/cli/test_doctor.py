@@ -278,3 +278,23 @@ def test_text_report_golden():
         '\n'
         'Found 1 error and 0 warnings.\n'
     )
+
+
+def test_lookup_without_common_time_fails():
+    """Two dynamic links whose data never overlap give tf2's extrapolation error for --frames."""
+    early = stream('map', 'odom', seconds=1.0)
+    late = [
+        Observation(
+            o.topic,
+            o.receive_ns + 20 * S,
+            tuple(
+                ObservedTransform(t.parent, t.child, t.stamp_ns + 20 * S, t.translation)
+                for t in o.transforms
+            ),
+        )
+        for o in stream('odom', 'base_link', seconds=1.0)
+    ]
+    findings = diagnose(early + late, frames=['map', 'base_link'])
+    finding = next(f for f in findings if f.kind == 'lookup_fails')
+    assert 'extrapolation into the past' in finding.message
+    assert diagnose(healthy(), frames=['map', 'laser', 'camera']) == []

@@ -284,6 +284,8 @@ def diagnose(
     if check_timing:
         findings.extend(_timing(stats, listen_ns, limits))
         findings.extend(_stopped(stats, max(o.receive_ns for o in observations)))
+        if not any(f.kind in ('missing_frame', 'disconnected', 'loop') for f in findings):
+            findings.extend(_lookups(observations, frames))
     order = {'error': 0, 'warning': 1, 'info': 2}
     findings.sort(key=lambda f: order[f.severity])
     return findings
@@ -609,6 +611,47 @@ def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -
                     'and will extrapolate into the future for up to that long.',
                     'Publish faster, look up at time 0 (latest available) or with a timeout, or '
                     'interpolate at the stamp of the data you transform.',
+                )
+            )
+    return findings
+
+
+def _lookups(observations: Sequence[Observation], frames: Sequence[str]) -> list[Finding]:
+    """Try the lookups the user needs (first frame to each other one, latest data) as tf2 would."""
+    if len(frames) < 2:
+        return []
+    from tf_demo.core.buffer_core import BufferCore
+    from tf_demo.core.exceptions import TransformException
+
+    def quiet(level: int, text: str) -> None:
+        del level, text
+
+    core = BufferCore(log=quiet)
+    for observation in sorted(observations, key=lambda o: o.receive_ns):
+        for t in observation.transforms:
+            core.set_transform(
+                t.parent,
+                t.child,
+                t.stamp_ns,
+                t.translation,
+                t.rotation,
+                'tf_doctor',
+                observation.topic == TF_STATIC_TOPIC,
+            )
+    findings = []
+    for frame in frames[1:]:
+        try:
+            core.lookup_transform(frames[0], frame, 0)
+        except TransformException as error:
+            findings.append(
+                Finding(
+                    'lookup_fails',
+                    'error',
+                    (frames[0], frame),
+                    f"Looking up '{frame}' in '{frames[0]}' with the latest data fails: {error}",
+                    'The links of this chain have no common time: every dynamic link must have '
+                    'data covering the same moment (check the rates and stamps of the links '
+                    'named above).',
                 )
             )
     return findings
