@@ -234,3 +234,15 @@ def test_monitor_frames_filtered_by_chain():
         'Frame: a, published by n, Average Delay: 2, Max Delay: 2',
         'Frame: c, published by n, Average Delay: 2, Max Delay: 3',
     ]
+
+
+def test_view_frames_default_file_names():
+    """Without -o the files are frames_<%Y-%m-%d_%H.%M.%S>.gv/.pdf, with -o NAME.gv/.pdf."""
+    import re
+
+    from tf_demo.cli.view_frames import output_names
+
+    gv, pdf = output_names(None)
+    assert re.fullmatch(r'frames_\d{4}-\d{2}-\d{2}_\d{2}\.\d{2}\.\d{2}\.gv', gv)
+    assert pdf == gv[:-3] + '.pdf'
+    assert output_names('tree') == ('tree.gv', 'tree.pdf')
