@@ -44,6 +44,7 @@ from tf_demo.msgs import cdr
 from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import tf2_msgs
 from tf_demo.transport import dds_backend
+from tf_demo.transport.clock import Duration
 from tf_demo.transport.qos import DynamicBroadcasterQoS
 
 TOPIC = '/bench_tf'
@@ -155,7 +156,7 @@ def run_source(args: argparse.Namespace) -> None:
         delay = next_time - time.monotonic()
         if delay > 0:
             time.sleep(delay)
-    publisher.wait_for_all_acked(5.0)
+    publisher.wait_for_all_acked(Duration(seconds=5.0))
     print(json.dumps({'sent': args.count}), flush=True)
     dds_backend.shutdown()
 
@@ -206,7 +207,7 @@ def bench_publish_cost(env: dict[str, str], calls: int) -> None:
         raw_us.append((time.perf_counter_ns() - start) / 1000.0)
         if index % 64 == 63:
             time.sleep(0.0005)
-    publisher.wait_for_all_acked(5.0)
+    publisher.wait_for_all_acked(Duration(seconds=5.0))
     dds_backend.shutdown()
     sink.kill()
     sink.wait()

@@ -32,6 +32,7 @@ import time
 from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import tf2_msgs
 from tf_demo.transport import dds_backend
+from tf_demo.transport.clock import Duration
 from tf_demo.transport.qos import DurabilityPolicy
 from tf_demo.transport.qos import HistoryPolicy
 from tf_demo.transport.qos import QoSProfile
@@ -91,7 +92,7 @@ def _publish(node: dds_backend.DdsNode, args: argparse.Namespace) -> int:
     while dds_backend.ok():
         dds_backend.spin_once(node, timeout_sec=0.05)
         if sent >= args.count and end is None:
-            publisher.wait_for_all_acked(5.0)
+            publisher.wait_for_all_acked(Duration(seconds=5.0))
             end = time.monotonic() + args.hold
             _say(f'sent {sent}')
         if end is not None and time.monotonic() >= end:

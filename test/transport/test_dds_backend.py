@@ -204,8 +204,26 @@ def test_timers_fire_periodically_and_stop_when_canceled(world):
     for _ in range(5):
         executor.spin_once(timeout_sec=0.02)
     assert len(ticks) == count
-    with pytest.raises(ValueError, match='timer period must be > 0'):
-        node.create_timer(0.0, lambda: None)
+    with pytest.raises(ValueError, match='timer period must be non-negative'):
+        node.create_timer(-0.01, lambda: None)
+
+
+@pytest.mark.dds
+def test_timer_period_and_autostart_follow_rclpy(world):
+    """Periods truncate to whole ns, 0 s fires on every spin, autostart=False waits for reset()."""
+    node = dds_backend.DdsNode('rclpy_timers')
+    assert node.create_timer(1.9e-9, lambda: None).timer_period_ns == 1
+    busy: list[int] = []
+    node.create_timer(0, lambda: busy.append(1))
+    waiting: list[int] = []
+    idle = node.create_timer(0.001, lambda: waiting.append(1), autostart=False)
+    assert idle.is_canceled()
+    executor = dds_backend.SingleThreadedExecutor()
+    executor.add_node(node)
+    assert spin_until(executor, lambda: len(busy) >= 3)
+    assert waiting == []
+    idle.reset()
+    assert spin_until(executor, lambda: len(waiting) >= 2)
 
 
 @pytest.mark.dds
@@ -459,3 +477,29 @@ def test_sim_time_timer_follows_clock_and_survives_a_backward_jump(world):
     for seconds in (10.0, 10.6, 11.3):
         advance_to(seconds)
     assert fired_at == [100_000_000_000, 101_200_000_000, 11_300_000_000]
+
+
+def test_second_shutdown_raises_like_rclpy_and_try_shutdown_is_quiet(dds_env):
+    """shutdown() twice raises RuntimeError (rclpy's Context); try_shutdown() never does."""
+    dds_backend.init(args=['prog'])
+    dds_backend.shutdown()
+    with pytest.raises(RuntimeError, match='already called'):
+        dds_backend.shutdown()
+    dds_backend.try_shutdown()
+    dds_backend.init()
+    dds_backend.try_shutdown()
+    assert not dds_backend.ok()
+
+
+@pytest.mark.dds
+def test_endpoint_options_the_backend_cannot_honour_are_refused(world):
+    """event_callbacks / qos_overriding_options raise instead of being ignored; typos TypeError."""
+    node = dds_backend.DdsNode('options')
+    with pytest.raises(NotImplementedError, match='qos_overriding_options'):
+        node.create_publisher(std_msgs.String, 'x', 10, qos_overriding_options=object())
+    with pytest.raises(NotImplementedError, match='event_callbacks'):
+        node.create_subscription(std_msgs.String, 'x', print, 10, event_callbacks=object())
+    with pytest.raises(TypeError):
+        node.create_publisher(std_msgs.String, 'x', 10, callback_grup=None)  # type: ignore[call-arg]
+    assert node.publishers == []
+    assert node.subscriptions == []

@@ -231,19 +231,11 @@ def run(options: argparse.Namespace, ros_args: list[str]) -> int:
     finally:
         stop_children(children)
         node.destroy_node()
-        _shutdown(transport)
+        transport.try_shutdown()
     if failure is not None:
         print(f'tf_demo_live: {failure}', file=sys.stderr)
         return 1
     return 0
-
-
-def _shutdown(transport: Any) -> None:
-    try_shutdown = getattr(transport, 'try_shutdown', None)
-    if try_shutdown is not None:
-        try_shutdown()
-    elif transport.ok():
-        transport.shutdown()
 
 
 def main(args: list[str] | None = None) -> int:

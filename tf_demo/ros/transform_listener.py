@@ -233,7 +233,9 @@ def _can_decode_raw(host: Any, buffer: Any) -> bool:
     """Whether to take serialised bytes: a tf_demo buffer on a standalone (DDS) node."""
     from tf_demo.ros.buffer import Buffer
 
-    return isinstance(buffer, Buffer) and type(host).__module__ == 'tf_demo.transport.dds_backend'
+    return isinstance(buffer, Buffer) and any(
+        cls.__module__ == 'tf_demo.transport.dds_backend' for cls in type(host).__mro__
+    )
 
 
 def _create_private_node(name: str) -> Any:

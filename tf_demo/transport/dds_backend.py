@@ -43,6 +43,7 @@ import weakref
 
 from tf_demo.transport import dds_wire
 from tf_demo.transport.clock import Clock
+from tf_demo.transport.clock import Duration
 from tf_demo.transport.clock import ROSClock
 from tf_demo.transport.clock import TimeSource
 from tf_demo.transport.qos import QoSProfile
@@ -69,11 +70,14 @@ __all__ = [
     'spin',
     'spin_once',
     'spin_until_future_complete',
+    'try_shutdown',
     'validate_namespace',
     'validate_node_name',
 ]
 
 _FLUSH_TIMEOUT_NS = 1_000_000_000
+_DDS_INFINITY = 2**63 - 1
+_WAIT_FOREVER = Duration(seconds=-1)
 _TAKE_BATCH = 256
 
 
@@ -220,7 +224,7 @@ class _Context:
 _context = _Context()
 
 
-def init(args: Sequence[str] | None = None, *, context: object = None) -> None:
+def init(*, args: Sequence[str] | None = None, context: object = None) -> None:
     """Initialise the standalone world (rclpy ``init``); ``args`` may hold ``--ros-args``."""
     del context
     with _context.lock:
@@ -236,12 +240,37 @@ def ok(*, context: object = None) -> bool:
 
 
 def shutdown(*, context: object = None) -> None:
-    """Stop every executor, flush every writer and release the DDS participant."""
+    """
+    Stop every executor, flush every writer and release the DDS participant.
+
+    :raises RuntimeError: before :func:`init` or a second time (as rclpy's ``Context.shutdown``;
+        :func:`try_shutdown` is the quiet form).
+    """
     del context
     with _context.lock:
+        if not _context.initialized:
+            msg = 'Context must be initialized before it can be shutdown'
+            raise RuntimeError(msg)
         if _context.shut_down:
+            msg = 'failed to shutdown: rcl_shutdown already called on the given context'
+            raise RuntimeError(msg)
+        _context.shut_down = True
+    _release_everything()
+
+
+def try_shutdown(*, context: object = None) -> None:
+    """Shut down unless not initialised or already shut down (rclpy ``try_shutdown``)."""
+    del context
+    with _context.lock:
+        if not _context.ok():
             return
         _context.shut_down = True
+    _release_everything()
+
+
+def _release_everything() -> None:
+    """Wake every executor, destroy every node and close the graph writer and participant."""
+    with _context.lock:
         executors = list(_context.executors)
         nodes = list(_context.nodes)
     for executor in executors:
@@ -375,11 +404,11 @@ class DdsPublisher:
         return self.topic_name
 
     def publish(self, msg: Any) -> None:
-        """Serialize ``msg`` (an instance of the publisher's type, or CDR bytes) and send it."""
-        if isinstance(msg, bytes | bytearray | memoryview):
-            payload = bytes(msg)
-        elif isinstance(msg, self.msg_type):
+        """Serialize ``msg`` (an instance of the publisher's type, or CDR ``bytes``); send it."""
+        if isinstance(msg, self.msg_type):
             payload = self._serialize(msg)
+        elif isinstance(msg, bytes):
+            payload = msg
         else:
             msg_text = (
                 f'Expected {self.msg_type.__name__}, got {type(msg).__name__} '
@@ -392,9 +421,10 @@ class DdsPublisher:
         """Return the number of matched subscriptions."""
         return int(self._writer.matched_count())
 
-    def wait_for_all_acked(self, timeout_sec: float = 1.0) -> bool:
-        """Block until every reliable subscription acknowledged everything published."""
-        return bool(self._writer.wait_for_acks(int(timeout_sec * 1e9)))
+    def wait_for_all_acked(self, timeout: Duration = _WAIT_FOREVER) -> bool:
+        """Block until every reliable subscription acknowledged everything (negative: no limit)."""
+        timeout_ns = timeout.nanoseconds
+        return bool(self._writer.wait_for_acks(timeout_ns if timeout_ns >= 0 else _DDS_INFINITY))
 
     def destroy(self) -> bool:
         """Destroy this publisher (same as ``node.destroy_publisher(self)``)."""
@@ -410,11 +440,25 @@ _SEQUENCE_NUMBER_UNSUPPORTED = 2**64 - 1
 
 
 def _takes_message_info(callback: Callable[..., Any]) -> bool:
-    """Whether ``callback`` takes ``(msg, message_info)``, as rclpy decides it."""
-    try:
-        return len(inspect.signature(callback).parameters) == 2
-    except (TypeError, ValueError):
-        return False
+    """
+    Whether ``callback`` gets ``(msg, message_info)``, by rclpy's rule.
+
+    A callback that binds one argument gets the message only; else one that binds two gets the
+    message info too.
+
+    :raises RuntimeError: when it binds neither (rclpy's text).
+    """
+    for arity in (1, 2):
+        try:
+            inspect.signature(callback).bind(*(object(),) * arity)
+        except TypeError:
+            continue
+        return arity == 2
+    msg = (
+        'Subscription.__init__(): callback should be either be callable with one argument'
+        '(to get only the message) or two (to get message and message info)'
+    )
+    raise RuntimeError(msg)
 
 
 class DdsSubscription:
@@ -442,7 +486,16 @@ class DdsSubscription:
 
         self._deserialize = cdr.deserialize
         self._decode_error = cdr.CdrError
-        self.wants_message_info = _takes_message_info(callback)
+
+    @property
+    def callback(self) -> Callable[..., Any]:
+        """The user callback; setting it re-applies rclpy's one-or-two-argument rule."""
+        return self._callback
+
+    @callback.setter
+    def callback(self, value: Callable[..., Any]) -> None:
+        self.wants_message_info = _takes_message_info(value)
+        self._callback = value
 
     @property
     def topic(self) -> str:
@@ -511,11 +564,13 @@ class DdsSubscription:
 class DdsTimer:
     """A periodic timer (rclpy ``Timer`` subset) on the node's clock."""
 
-    def __init__(self, callback: Callable[[], Any], period_ns: int, clock: Clock) -> None:
+    def __init__(
+        self, callback: Callable[[], Any], period_ns: int, clock: Clock, *, autostart: bool = True
+    ) -> None:
         self.callback = callback
         self.timer_period_ns = period_ns
         self.clock = clock
-        self._canceled = False
+        self._canceled = not autostart
         self._next_call_ns = int(clock.now().nanoseconds) + period_ns
         self._last_call_ns: int | None = None
         self._wake: Callable[[], None] | None = None
@@ -563,7 +618,9 @@ class DdsTimer:
         now = self._now_ns()
         self._last_call_ns = now
         self._next_call_ns += self.timer_period_ns
-        if self._next_call_ns <= now:
+        if self.timer_period_ns == 0:
+            self._next_call_ns = now
+        elif self._next_call_ns <= now:
             # Fell behind (or the clock jumped): skip missed periods, as rcl does.
             missed = (now - self._next_call_ns) // self.timer_period_ns + 1
             self._next_call_ns += missed * self.timer_period_ns
@@ -571,6 +628,17 @@ class DdsTimer:
     def destroy(self) -> None:
         """Cancel the timer for good."""
         self._canceled = True
+
+
+def _refuse_unsupported(event_callbacks: object, qos_overriding_options: object) -> None:
+    """Raise rather than silently ignore rclpy options that change an endpoint's behaviour."""
+    for name, value in (
+        ('event_callbacks', event_callbacks),
+        ('qos_overriding_options', qos_overriding_options),
+    ):
+        if value is not None:
+            msg = f'{name} is not supported by the standalone (DDS) backend; pass None'
+            raise NotImplementedError(msg)
 
 
 class CallbackGroup:
@@ -820,10 +888,24 @@ class DdsNode:
         return report
 
     def create_publisher(
-        self, msg_type: Any, topic: str, qos_profile: Any, **kwargs: Any
+        self,
+        msg_type: Any,
+        topic: str,
+        qos_profile: Any,
+        *,
+        callback_group: object = None,
+        event_callbacks: object = None,
+        qos_overriding_options: object = None,
+        publisher_class: type[DdsPublisher] = DdsPublisher,
     ) -> DdsPublisher:
-        """Create a publisher of ``msg_type`` on ``topic`` with a QoSProfile or history depth."""
-        del kwargs
+        """
+        Create a publisher of ``msg_type`` on ``topic`` with a QoSProfile or history depth.
+
+        :raises NotImplementedError: for ``event_callbacks`` or ``qos_overriding_options``
+            (incompatible QoS is logged as rclpy's default handler does).
+        """
+        del callback_group
+        _refuse_unsupported(event_callbacks, qos_overriding_options)
         self._check_alive()
         type_name, type_hash = _message_type_info(msg_type)
         profile = _as_profile(qos_profile)
@@ -836,7 +918,7 @@ class DdsNode:
             f'typehash={type_hash};'.encode(),
             self._incompatible_qos_reporter(topic, publisher=True),
         )
-        publisher = DdsPublisher(self, msg_type, full_topic, profile, writer)
+        publisher = publisher_class(self, msg_type, full_topic, profile, writer)
         with self._lock:
             self._publishers.append(publisher)
         _graph_changed()
@@ -849,11 +931,22 @@ class DdsNode:
         callback: Callable[[Any], Any],
         qos_profile: Any,
         *,
+        callback_group: object = None,
+        event_callbacks: object = None,
+        qos_overriding_options: object = None,
         raw: bool = False,
-        **kwargs: Any,
     ) -> DdsSubscription:
-        """Create a subscription; ``callback(msg)`` runs in the executor that spins the node."""
-        del kwargs
+        """
+        Create a subscription; ``callback(msg)`` runs in the executor that spins the node.
+
+        ``callback(msg, message_info)`` when it binds two arguments but not one (rclpy's rule).
+
+        :raises RuntimeError: for a callback that binds neither one nor two arguments.
+        :raises NotImplementedError: for ``event_callbacks`` or ``qos_overriding_options``.
+        """
+        del callback_group
+        _refuse_unsupported(event_callbacks, qos_overriding_options)
+        _takes_message_info(callback)
         self._check_alive()
         type_name, type_hash = _message_type_info(msg_type)
         profile = _as_profile(qos_profile)
@@ -881,15 +974,21 @@ class DdsNode:
         callback: Callable[[], Any],
         callback_group: object = None,
         clock: Clock | None = None,
+        autostart: bool = True,
     ) -> DdsTimer:
-        """Create a timer calling ``callback()`` every ``timer_period_sec`` seconds."""
+        """
+        Create a timer calling ``callback()`` every ``timer_period_sec`` seconds.
+
+        The period is truncated to whole nanoseconds, as rclpy does; with ``autostart=False``
+        the timer starts canceled until :meth:`DdsTimer.reset`.
+        """
         del callback_group
         self._check_alive()
-        period_ns = round(float(timer_period_sec) * 1e9)
-        if period_ns <= 0:
-            msg = f'timer period must be > 0 s, got {timer_period_sec!r}'
+        period_ns = int(float(timer_period_sec) * 1e9)
+        if period_ns < 0:
+            msg = f'timer period must be non-negative, got {timer_period_sec!r}'
             raise ValueError(msg)
-        timer = DdsTimer(callback, period_ns, clock or self._clock)
+        timer = DdsTimer(callback, period_ns, clock or self._clock, autostart=autostart)
         timer._wake = self._wake_executors
         with self._lock:
             self._timers.append(timer)
