@@ -22,10 +22,12 @@ the parsing is tested without processes. ``--ros-args`` sections are split off f
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from dataclasses import field
 import math
 import re
+import sys
 
 from tf_demo.core.math3d import quat_from_rpy
 
@@ -46,16 +48,16 @@ _C_FLOAT_PREFIX = re.compile(
 )
 
 
-def split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
+def split_ros_args(argv: Sequence[str] | None = None) -> tuple[list[str], list[str]]:
     """
-    Split ``argv`` into (tool arguments, ROS arguments).
+    Split ``argv`` (default: ``sys.argv[1:]``) into (tool arguments, ROS arguments).
 
     Every ``--ros-args`` section runs to the next ``--`` or the end, as in rclcpp.
     """
     tool_args: list[str] = []
     ros_args: list[str] = []
     in_ros = False
-    for token in argv:
+    for token in sys.argv[1:] if argv is None else argv:
         if token == '--ros-args':
             in_ros = True
             ros_args.append(token)
@@ -307,3 +309,10 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
             return result
         result.rate_hz = parsed[0]
     return result
+
+
+def negative_wait_time_error(wait_time: float) -> str | None:
+    """Return the error text for a ``--wait-time`` that is negative or NaN, else None."""
+    if wait_time >= 0:
+        return None
+    return f'--wait-time must be >= 0, got {wait_time}'

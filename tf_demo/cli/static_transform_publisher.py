@@ -100,8 +100,7 @@ def make_node(
 
 def main(args: list[str] | None = None) -> int:
     """Run static_transform_publisher with ``args`` (default: ``sys.argv[1:]``)."""
-    argv = list(sys.argv[1:] if args is None else args)
-    tool_args, ros_args = split_ros_args(argv)
+    tool_args, ros_args = split_ros_args(args)
     parsed = parse_static_transform_args(tool_args)
     for warning in parsed.warnings:
         log_unnamed('WARN', warning)

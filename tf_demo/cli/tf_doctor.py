@@ -34,6 +34,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from tf_demo.cli._args import negative_wait_time_error
 from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._doctor import diagnose
 from tf_demo.cli._doctor import exit_code
@@ -121,11 +122,11 @@ def _listen_and_report(options: argparse.Namespace) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_doctor with ``args`` (default: ``sys.argv[1:]``)."""
-    argv = list(sys.argv[1:] if args is None else args)
-    tool_args, ros_args = split_ros_args(argv)
+    tool_args, ros_args = split_ros_args(args)
     options = build_parser().parse_args(tool_args)
-    if not options.wait_time >= 0:
-        print_error(TOOL, f'--wait-time must be >= 0, got {options.wait_time}')
+    wait_time_error = negative_wait_time_error(options.wait_time)
+    if wait_time_error is not None:
+        print_error(TOOL, wait_time_error)
         return 2
     if options.snapshot is not None:
         try:

@@ -130,8 +130,7 @@ def _echo(options: EchoArgs) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_echo with ``args`` (default: ``sys.argv[1:]``)."""
-    argv = list(sys.argv[1:] if args is None else args)
-    tool_args, ros_args = split_ros_args(argv)
+    tool_args, ros_args = split_ros_args(args)
     options = parse_echo_args(tool_args)
     if options.show_usage:
         _write(ECHO_USAGE)

@@ -77,8 +77,7 @@ def _publish(snapshot: Snapshot, source: str) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_loader with ``args`` (default: ``sys.argv[1:]``)."""
-    argv = list(sys.argv[1:] if args is None else args)
-    tool_args, ros_args = split_ros_args(argv)
+    tool_args, ros_args = split_ros_args(args)
     options = build_parser().parse_args(tool_args)
     try:
         snapshot = read_snapshot(options.file)

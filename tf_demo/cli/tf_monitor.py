@@ -173,8 +173,7 @@ def _monitor(options: argparse.Namespace) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_monitor with ``args`` (default: ``sys.argv[1:]``)."""
-    argv = list(sys.argv[1:] if args is None else args)
-    tool_args, ros_args = split_ros_args(argv)
+    tool_args, ros_args = split_ros_args(args)
     parser = argparse.ArgumentParser(prog='tf_monitor', add_help=True)
     parser.add_argument('frames', nargs='*')
     parser.add_argument('--interval', type=float, default=TICK_S * TICKS_PER_REPORT)

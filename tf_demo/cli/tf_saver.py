@@ -35,6 +35,7 @@ import math
 import sys
 from typing import Any
 
+from tf_demo.cli._args import negative_wait_time_error
 from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._doctor import Observation
 from tf_demo.cli._doctor import TF_STATIC_TOPIC
@@ -207,11 +208,11 @@ def _record_and_save(options: argparse.Namespace) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_saver with ``args`` (default: ``sys.argv[1:]``)."""
-    argv = list(sys.argv[1:] if args is None else args)
-    tool_args, ros_args = split_ros_args(argv)
+    tool_args, ros_args = split_ros_args(args)
     options = build_parser().parse_args(tool_args)
-    if not options.wait_time >= 0:
-        print_error(TOOL, f'--wait-time must be >= 0, got {options.wait_time}')
+    wait_time_error = negative_wait_time_error(options.wait_time)
+    if wait_time_error is not None:
+        print_error(TOOL, wait_time_error)
         return 2
     return run_tool(TOOL, ros_args, lambda: _record_and_save(options))
 

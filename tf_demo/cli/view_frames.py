@@ -138,8 +138,7 @@ class _StderrLogger:
 
 def main(args: list[str] | None = None) -> int:
     """Run view_frames with ``args`` (default: ``sys.argv[1:]``)."""
-    argv = list(sys.argv[1:] if args is None else args)
-    tool_args, ros_args = split_ros_args(argv)
+    tool_args, ros_args = split_ros_args(args)
     options = build_parser().parse_args(tool_args)
     if options.wait_time < 0 or options.wait_time != options.wait_time:
         print_error(TOOL, f'--wait-time must be >= 0, got {options.wait_time}')
