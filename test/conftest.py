@@ -28,9 +28,15 @@ import sys
 import tempfile
 from typing import IO
 
+from hypothesis import settings
 import pytest
+from tf_demo.testing import strategies  # noqa: F401  (registers the 'ci' and 'nightly' profiles)
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
+
+# Every hypothesis test runs deterministically in CI (derandomized 'ci' profile) unless
+# TF_DEMO_HYPOTHESIS_PROFILE=nightly asks for the larger random run.
+settings.load_profile(os.environ.get('TF_DEMO_HYPOTHESIS_PROFILE', 'ci'))
 _LOCK_DIR = Path(tempfile.gettempdir()) / 'tf_demo_domains'
 # Domain ids 0..232 are valid for Cyclone's port mapping; keep clear of 0 (the user's default).
 _FIRST_DOMAIN, _LAST_DOMAIN = 100, 230
