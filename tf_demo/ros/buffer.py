@@ -310,10 +310,7 @@ class Buffer(BufferCore):
 
         :return: whether the core stored it (errors are logged, as tf2 does).
         """
-        parent, child, stamp_ns, translation, rotation = transform_stamped_args(transform)
-        return BufferCore.set_transform(
-            self, parent, child, stamp_ns, translation, rotation, authority, False
-        )
+        return self._insert(transform, authority, is_static=False)
 
     def set_transform_static(self, transform: Any, authority: str) -> bool:
         """
@@ -321,9 +318,12 @@ class Buffer(BufferCore):
 
         :return: whether the core stored it.
         """
+        return self._insert(transform, authority, is_static=True)
+
+    def _insert(self, transform: Any, authority: str, *, is_static: bool) -> bool:
         parent, child, stamp_ns, translation, rotation = transform_stamped_args(transform)
         return BufferCore.set_transform(
-            self, parent, child, stamp_ns, translation, rotation, authority, True
+            self, parent, child, stamp_ns, translation, rotation, authority, is_static
         )
 
     @staticmethod
@@ -353,12 +353,7 @@ class Buffer(BufferCore):
     ) -> Any:
         """Look up with the advanced (time-travel) API now, without waiting."""
         result = BufferCore.lookup_transform_full(
-            self,
-            target_frame,
-            ns_from_time(target_time),
-            source_frame,
-            ns_from_time(source_time),
-            fixed_frame,
+            self, *_full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
         )
         return self._message(target_frame, source_frame, result)
 
@@ -382,11 +377,7 @@ class Buffer(BufferCore):
         """Return ``(possible, error_text)`` for the advanced API now, without waiting."""
         answer = BufferCore.can_transform_full(
             self,
-            target_frame,
-            ns_from_time(target_time),
-            source_frame,
-            ns_from_time(source_time),
-            fixed_frame,
+            *_full_query(target_frame, target_time, source_frame, source_time, fixed_frame),
             return_debug_tuple=True,
         )
         return _debug_tuple(answer)
@@ -466,15 +457,11 @@ class Buffer(BufferCore):
 
         :return: ``bool``, or ``(bool, error_text)`` when ``return_debug_tuple``.
         """
-        args = (
-            target_frame,
-            ns_from_time(target_time),
-            source_frame,
-            ns_from_time(source_time),
-            fixed_frame,
+        query = _full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
+        self._wait_until(
+            lambda: self.can_transform_full_core(*query)[0], ns_from_duration(timeout)
         )
-        self._wait_until(lambda: self.can_transform_full_core(*args)[0], ns_from_duration(timeout))
-        answer = self.can_transform_full_core(*args)
+        answer = self.can_transform_full_core(*query)
         return answer if return_debug_tuple else answer[0]
 
     # --------------------------------------------------------------------------- async API
@@ -511,16 +498,10 @@ class Buffer(BufferCore):
 
         :return: a future resolving to the ``TransformStamped``.
         """
-        args = (
-            target_frame,
-            ns_from_time(target_time),
-            source_frame,
-            ns_from_time(source_time),
-            fixed_frame,
-        )
+        query = _full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
         return self._wait_async(
-            lambda: self.can_transform_full_core(*args)[0],
-            lambda: self.lookup_transform_full_core(*args),
+            lambda: self.can_transform_full_core(*query)[0],
+            lambda: self.lookup_transform_full_core(*query),
             timeout,
             f'Timed out waiting for transform from [{source_frame}] to [{target_frame}] '
             f'via [{fixed_frame}]',
@@ -726,6 +707,19 @@ def _create_frames_service(node: Any, buffer: Buffer) -> Any:
         return frame_graph.Response(frame_yaml=buffer.all_frames_as_yaml())
 
     return create_service(frame_graph, 'tf2_frames', answer)
+
+
+def _full_query(
+    target_frame: str, target_time: Any, source_frame: str, source_time: Any, fixed_frame: str
+) -> tuple[str, int, str, int, str]:
+    """Return the core's advanced-API arguments, times in integer nanoseconds."""
+    return (
+        target_frame,
+        ns_from_time(target_time),
+        source_frame,
+        ns_from_time(source_time),
+        fixed_frame,
+    )
 
 
 def _debug_tuple(answer: bool | tuple[bool, str]) -> tuple[bool, str]:
