@@ -772,21 +772,14 @@ class DdsParticipant:
         on_incompatible_qos: IncompatibleQosHandler | None = None,
     ) -> RawWriter:
         """Create a raw-bytes writer on ``dds_topic``."""
-        topic = self.topic(dds_topic, type_name)
-        listener = self._endpoint_listener(on_incompatible_qos, writer=True)
-        cqos = _CQos.qos_to_cqos(cyclone_qos(qos, user_data))
-        try:
-            handle = _lib.dds_create_writer(
-                self.handle,
-                topic,
-                cqos,
-                listener._ref if listener else None,
-            )
-        finally:
-            _CQos.cqos_destroy(cqos)
-        _check(handle, f'creating a DDS writer on {dds_topic!r}')
-        if listener is not None:
-            self._listeners[handle] = listener
+        handle, listener = self._create_endpoint(
+            _lib.dds_create_writer,
+            'writer',
+            dds_topic=dds_topic,
+            type_name=type_name,
+            qos=cyclone_qos(qos, user_data),
+            listener=self._endpoint_listener(on_incompatible_qos, writer=True),
+        )
         return RawWriter(self, handle, listener)
 
     def create_reader(
@@ -800,22 +793,37 @@ class DdsParticipant:
         ignore_local: bool = False,
     ) -> RawReader:
         """Create a raw-bytes reader on ``dds_topic``."""
+        handle, listener = self._create_endpoint(
+            _lib.dds_create_reader,
+            'reader',
+            dds_topic=dds_topic,
+            type_name=type_name,
+            qos=cyclone_qos(qos, user_data, ignore_local=ignore_local),
+            listener=self._endpoint_listener(on_incompatible_qos, writer=False),
+        )
+        return RawReader(self, handle, listener)
+
+    def _create_endpoint(
+        self,
+        create: Callable[..., int],
+        kind: str,
+        *,
+        dds_topic: str,
+        type_name: str,
+        qos: Qos,
+        listener: Listener | None,
+    ) -> tuple[int, Listener | None]:
+        """Create a writer or reader with ``create`` and keep its listener alive."""
         topic = self.topic(dds_topic, type_name)
-        listener = self._endpoint_listener(on_incompatible_qos, writer=False)
-        cqos = _CQos.qos_to_cqos(cyclone_qos(qos, user_data, ignore_local=ignore_local))
+        cqos = _CQos.qos_to_cqos(qos)
         try:
-            handle = _lib.dds_create_reader(
-                self.handle,
-                topic,
-                cqos,
-                listener._ref if listener else None,
-            )
+            handle = create(self.handle, topic, cqos, listener._ref if listener else None)
         finally:
             _CQos.cqos_destroy(cqos)
-        _check(handle, f'creating a DDS reader on {dds_topic!r}')
+        _check(handle, f'creating a DDS {kind} on {dds_topic!r}')
         if listener is not None:
             self._listeners[handle] = listener
-        return RawReader(self, handle, listener)
+        return handle, listener
 
     def count_endpoints(self, dds_topic: str, *, publications: bool) -> int:
         """Count the live writers (``publications``) or readers on ``dds_topic`` in the domain."""
