@@ -887,6 +887,25 @@ class DdsNode:
 
         return report
 
+    def _open_endpoint(
+        self, msg_type: Any, topic: str, qos_profile: Any, *, publisher: bool
+    ) -> tuple[Any, str, Any]:
+        """Create the DDS writer (``publisher``) or reader; return it, the topic and profile."""
+        self._check_alive()
+        type_name, type_hash = _message_type_info(msg_type)
+        profile = _as_profile(qos_profile)
+        full_topic = self.resolve_topic_name(topic)
+        participant = self._participant
+        create = participant.create_writer if publisher else participant.create_reader
+        endpoint = create(
+            dds_wire.dds_topic_name(full_topic),
+            type_name,
+            dds_wire.endpoint_qos_from_profile(profile),
+            f'typehash={type_hash};'.encode(),
+            self._incompatible_qos_reporter(topic, publisher=publisher),
+        )
+        return endpoint, full_topic, profile
+
     def create_publisher(
         self,
         msg_type: Any,
@@ -906,17 +925,8 @@ class DdsNode:
         """
         del callback_group
         _refuse_unsupported(event_callbacks, qos_overriding_options)
-        self._check_alive()
-        type_name, type_hash = _message_type_info(msg_type)
-        profile = _as_profile(qos_profile)
-        endpoint_qos = dds_wire.endpoint_qos_from_profile(profile)
-        full_topic = self.resolve_topic_name(topic)
-        writer = self._participant.create_writer(
-            dds_wire.dds_topic_name(full_topic),
-            type_name,
-            endpoint_qos,
-            f'typehash={type_hash};'.encode(),
-            self._incompatible_qos_reporter(topic, publisher=True),
+        writer, full_topic, profile = self._open_endpoint(
+            msg_type, topic, qos_profile, publisher=True
         )
         publisher = publisher_class(self, msg_type, full_topic, profile, writer)
         with self._lock:
@@ -947,17 +957,8 @@ class DdsNode:
         del callback_group
         _refuse_unsupported(event_callbacks, qos_overriding_options)
         _takes_message_info(callback)
-        self._check_alive()
-        type_name, type_hash = _message_type_info(msg_type)
-        profile = _as_profile(qos_profile)
-        endpoint_qos = dds_wire.endpoint_qos_from_profile(profile)
-        full_topic = self.resolve_topic_name(topic)
-        reader = self._participant.create_reader(
-            dds_wire.dds_topic_name(full_topic),
-            type_name,
-            endpoint_qos,
-            f'typehash={type_hash};'.encode(),
-            self._incompatible_qos_reporter(topic, publisher=False),
+        reader, full_topic, profile = self._open_endpoint(
+            msg_type, topic, qos_profile, publisher=False
         )
         subscription = DdsSubscription(
             self, msg_type, full_topic, callback, qos_profile=profile, reader=reader, raw=raw
@@ -1003,20 +1004,16 @@ class DdsNode:
 
     def destroy_publisher(self, publisher: DdsPublisher) -> bool:
         """Destroy ``publisher`` (waits briefly for reliable readers to acknowledge)."""
-        with self._lock:
-            if publisher not in self._publishers:
-                return False
-            self._publishers.remove(publisher)
+        if not self._detach(self._publishers, publisher):
+            return False
         publisher._close()
         _graph_changed()
         return True
 
     def destroy_subscription(self, subscription: DdsSubscription) -> bool:
         """Destroy ``subscription``."""
-        with self._lock:
-            if subscription not in self._subscriptions:
-                return False
-            self._subscriptions.remove(subscription)
+        if not self._detach(self._subscriptions, subscription):
+            return False
         self._wake_executors()
         subscription._close()
         _graph_changed()
@@ -1024,11 +1021,17 @@ class DdsNode:
 
     def destroy_timer(self, timer: DdsTimer) -> bool:
         """Destroy ``timer``."""
-        with self._lock:
-            if timer not in self._timers:
-                return False
-            self._timers.remove(timer)
+        if not self._detach(self._timers, timer):
+            return False
         timer.destroy()
+        return True
+
+    def _detach(self, entities: list[Any], entity: object) -> bool:
+        """Remove ``entity`` from the node's list; False when it is not (or no longer) there."""
+        with self._lock:
+            if entity not in entities:
+                return False
+            entities.remove(entity)
         return True
 
     def destroy_node(self) -> None:
