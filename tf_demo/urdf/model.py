@@ -248,6 +248,7 @@ class RobotModel:
         append = transforms.append
         sin = math.sin
         cos = math.cos
+        kdl_sign = kdl_quaternion
         for (
             name,
             revolute,
@@ -282,19 +283,7 @@ class RobotModel:
             x = qx * c + ux * s
             y = qy * c + uy * s
             z = qz * c + uz * s
-            w = qw * c - d * s
-            # KDL's sign: w > 0 in the trace branch, else the largest-diagonal component > 0
-            if 4.0 * w * w - 1.0 > 1e-12:
-                negative = w < 0.0
-            else:
-                xx, yy, zz = x * x, y * y, z * z
-                if xx > yy and xx > zz:
-                    negative = x < 0.0
-                elif yy > zz:
-                    negative = y < 0.0
-                else:
-                    negative = z < 0.0
-            append((parent, child, t, (-x, -y, -z, -w) if negative else (x, y, z, w)))
+            append((parent, child, t, kdl_sign(x, y, z, qw * c - d * s)))
         return transforms
 
     def link_poses(self, positions: Mapping[str, float]) -> dict[str, tuple[Vec3, Quat]]:
