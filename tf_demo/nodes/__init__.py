@@ -13,3 +13,21 @@
 # limitations under the License.
 
 """tf_demo: a pure-Python tf2 for ROS 2 Jazzy and the standalone world."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+
+def non_ros_arguments(args: Sequence[str]) -> list[str]:
+    """Return the arguments outside ``--ros-args ... [--]`` blocks, in order."""
+    plain: list[str] = []
+    inside = False
+    for arg in args:
+        if arg == '--ros-args':
+            inside = True
+        elif arg == '--' and inside:
+            inside = False
+        elif not inside:
+            plain.append(arg)
+    return plain

@@ -35,6 +35,7 @@ import math
 import sys
 from typing import Any
 
+from tf_demo.nodes import non_ros_arguments
 from tf_demo.urdf import parse_xacro_args
 from tf_demo.urdf import RobotModel
 from tf_demo.urdf import UrdfError
@@ -407,15 +408,7 @@ def joint_state_message(
 
 
 def _urdf_file_argument(args: Sequence[str]) -> str | None:
-    plain: list[str] = []
-    inside = False
-    for arg in args:
-        if arg == '--ros-args':
-            inside = True
-        elif arg == '--' and inside:
-            inside = False
-        elif not inside:
-            plain.append(arg)
+    plain = non_ros_arguments(args)
     if len(plain) > 1:
         msg = f'joint_state_publisher: unrecognized arguments: {" ".join(plain[1:])}'
         raise SystemExit(msg)

@@ -41,6 +41,7 @@ from struct import Struct
 import sys
 from typing import Any
 
+from tf_demo.nodes import non_ros_arguments
 from tf_demo.urdf import JointTransform
 from tf_demo.urdf import parse_xacro_args
 from tf_demo.urdf import RobotModel
@@ -199,20 +200,6 @@ class TfMessageEncoder:
             else:
                 parts.append(packer[2].pack(sec, nanosec, packer[3], tx, ty, tz, qx, qy, qz, qw))
         return b''.join(parts)
-
-
-def _non_ros_arguments(args: Sequence[str]) -> list[str]:
-    """Return the arguments outside ``--ros-args ... [--]`` blocks (the program name excluded)."""
-    plain: list[str] = []
-    inside = False
-    for arg in args:
-        if arg == '--ros-args':
-            inside = True
-        elif arg == '--' and inside:
-            inside = False
-        elif not inside:
-            plain.append(arg)
-    return plain
 
 
 def _load_model(xml: str) -> RobotModel:
@@ -518,7 +505,7 @@ def main(args: Sequence[str] | None = None) -> int:
     from tf_demo.transport import run_node
 
     argv = list(sys.argv if args is None else args)  # argv[0] is the program
-    file_arguments = _non_ros_arguments(argv[1:])
+    file_arguments = non_ros_arguments(argv[1:])
     node_class = _build_node_class()
 
     def factory() -> Any:
