@@ -15,15 +15,19 @@
 """
 Benchmark the CDR codec against cyclonedds-python's IdlStruct on TFMessages of 1 and 50 transforms.
 
-Run: ``.venv/bin/python bench/bench_codec.py``. Prints microseconds per message (best of several
-runs, CPU time of this process) and the speed-up over IdlStruct. The issue's target: encode plus
-decode of a 50-transform TFMessage within 100 us.
+Run: ``.venv/bin/python bench/bench_codec.py [--repeat N]``. Prints CPU microseconds per message
+of this process (minimum and median over N runs, for a shared, loaded machine) and the speed-up
+over IdlStruct (minimum against minimum). The issue's target: encode plus decode of a 50-transform
+TFMessage within 100 us ("encode + decode" times one ``deserialize(serialize(m))`` per call).
 
 No ``from __future__ import annotations``: cyclonedds reads the annotations at class creation.
 """
 
+import argparse
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
+import statistics
 import sys
 import time
 import timeit
@@ -31,6 +35,9 @@ import timeit
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
 import cyclonedds.idl.types as idl
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # tf_demo from this checkout
+
 from tf_demo.msgs import cdr
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.geometry_msgs import TransformStamped
@@ -129,36 +136,54 @@ def make_messages(count: int) -> tuple[TFMessage, TFMessage_]:
     return ours, theirs
 
 
-def best_us(function: Callable[[], object], number: int) -> float:
-    """Return the best per-call CPU time in microseconds over several runs."""
-    runs = timeit.repeat(function, number=number, repeat=7, timer=time.process_time)
-    return min(runs) / number * 1e6
+def times_us(function: Callable[[], object], number: int, repeat: int) -> tuple[float, float]:
+    """Return the (minimum, median) per-call CPU time in microseconds over ``repeat`` runs."""
+    runs = sorted(timeit.repeat(function, number=number, repeat=repeat, timer=time.process_time))
+    return runs[0] / number * 1e6, statistics.median(runs) / number * 1e6
 
 
 def main() -> int:
     """Run the benchmark and print a table."""
-    print(f'Python {sys.version.split()[0]}; times are best-of-7 CPU microseconds per message')
-    print(f'{"case":34s} {"ours":>9s} {"IdlStruct":>10s} {"speed-up":>9s}')
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('--repeat', type=int, default=25, help='timed runs per case (default 25)')
+    repeat = parser.parse_args().repeat
+    print(f'Python {sys.version.split()[0]}; CPU microseconds per message over {repeat} runs')
+    print(
+        f'{"case":34s} {"ours min":>9s} {"median":>8s} {"IdlStruct min":>14s} {"median":>8s}'
+        f' {"speed-up":>9s}'
+    )
     for count in (1, 10, 50):
         ours, theirs = make_messages(count)
         data = cdr.serialize(ours)
         assert theirs.serialize(use_version_2=False)[: len(data)] == data
+        assert cdr.deserialize(TFMessage, data) == ours
         number = max(20, 20_000 // (count * 10))
-        encode = best_us(lambda ours=ours: cdr.serialize(ours), number)
-        decode = best_us(lambda data=data: cdr.deserialize(TFMessage, data), number)
-        fast = best_us(lambda data=data: cdr.decode_tf_message_transforms(data), number)
-        idl_encode = best_us(lambda theirs=theirs: theirs.serialize(use_version_2=False), number)
-        idl_decode = best_us(
-            lambda data=data: TFMessage_.deserialize(data, has_header=True), number
+        encode = times_us(lambda ours=ours: cdr.serialize(ours), number, repeat)
+        decode = times_us(lambda data=data: cdr.deserialize(TFMessage, data), number, repeat)
+        fast = times_us(lambda data=data: cdr.decode_tf_message_transforms(data), number, repeat)
+        both = times_us(
+            lambda ours=ours: cdr.deserialize(TFMessage, cdr.serialize(ours)), number, repeat
         )
+        idl_encode = times_us(
+            lambda theirs=theirs: theirs.serialize(use_version_2=False), number // 4 or 1, repeat
+        )
+        idl_decode = times_us(
+            lambda data=data: TFMessage_.deserialize(data, has_header=True),
+            number // 4 or 1,
+            repeat,
+        )
+        idl_both = (idl_encode[0] + idl_decode[0], idl_encode[1] + idl_decode[1])
         rows = [
             (f'{count} tf: encode', encode, idl_encode),
             (f'{count} tf: decode to messages', decode, idl_decode),
             (f'{count} tf: decode tf fast path', fast, idl_decode),
-            (f'{count} tf: encode + decode', encode + decode, idl_encode + idl_decode),
+            (f'{count} tf: encode + decode', both, idl_both),
         ]
-        for label, mine, other in rows:
-            print(f'{label:34s} {mine:9.1f} {other:10.1f} {other / mine:8.1f}x')
+        for label, (mine, mine_median), (other, other_median) in rows:
+            print(
+                f'{label:34s} {mine:9.1f} {mine_median:8.1f} {other:14.1f} {other_median:8.1f}'
+                f' {other / mine:8.1f}x'
+            )
     return 0
 
 

@@ -30,7 +30,9 @@ from tf_demo.msgs._reference import reference_deserialize
 from tf_demo.msgs._reference import reference_serialize
 from tf_demo.msgs._schema import DEFINITIONS
 from tf_demo.msgs.builtin_interfaces import Time
+from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.geometry_msgs import Point32
+from tf_demo.msgs.geometry_msgs import TransformStamped
 from tf_demo.msgs.geometry_msgs import Vector3
 from tf_demo.msgs.rmw_dds_common import Gid
 from tf_demo.msgs.rmw_dds_common import NodeEntitiesInfo
@@ -361,7 +363,7 @@ def _big_endian_tf_message(
 @given(message=message_strategy('tf2_msgs/msg/TFMessage'))
 def test_big_endian_tf_messages_decode_like_little_endian(message: Any) -> None:
     """Multi-transform CDR_BE input decodes to the same message on both decode paths."""
-    transforms = [
+    transforms: list[tuple[str, str, int, int, tuple[float, ...]]] = [
         (
             t.header.frame_id,
             t.child_frame_id,
@@ -391,3 +393,119 @@ def test_deserialize_accepts_an_instance_as_the_type() -> None:
     data = cdr.serialize(Vector3(x=2.0))
     assert cdr.deserialize(Vector3(), data) == Vector3(x=2.0)
     assert cdr.deserialize('geometry_msgs/Vector3', data) == Vector3(x=2.0)
+
+
+def _learn_layout(data: bytes) -> None:
+    """Decode ``data`` twice, so that its whole-message layout is compiled, and check it is."""
+    cdr.deserialize(TFMessage, data)
+    cdr.deserialize(TFMessage, data)
+    assert cdr._TF_SHAPES[data[1]].layouts[len(data)][2] is not None  # the layout path is armed
+
+
+@pytest.mark.property
+@settings(max_examples=150, deadline=None)
+@given(data=st.data(), big_endian=st.booleans())
+def test_known_tf_layouts_decode_mutated_bytes_like_the_reference(
+    data: Any, big_endian: bool
+) -> None:
+    """With its layout learnt, a same-size message with flipped bytes decodes as the reference."""
+    transforms = data.draw(
+        st.lists(message_strategy('geometry_msgs/msg/TransformStamped'), min_size=4, max_size=7)
+    )
+    message = TFMessage(transforms=transforms)
+    original = cdr.serialize(message)
+    if big_endian:
+        original = b'\x00\x00\x00\x00' + reference_serialize_big_endian(message)
+    _learn_layout(original)
+    assert cdr.deserialize(TFMessage, original) == message
+    raw = bytearray(original)
+    for _ in range(data.draw(st.integers(1, 4))):
+        raw[data.draw(st.integers(4, len(raw) - 1))] = data.draw(st.integers(0, 255))
+    mutated = bytes(raw)
+    outcome = _decode_or_error('tf2_msgs/msg/TFMessage', mutated)
+    try:
+        reference: Any = reference_deserialize('tf2_msgs/msg/TFMessage', mutated)
+    except cdr.CdrError as error:
+        reference = error
+    if isinstance(reference, cdr.CdrError):
+        assert str(outcome) == str(reference)
+        assert isinstance(_decode_or_error('', mutated, tf_fast_path=True), cdr.CdrError)
+    else:
+        assert repr(outcome) == repr(reference)  # NaN-safe
+        tuples = cdr.decode_tf_message_transforms(mutated)
+        assert [(t[0], t[1]) for t in tuples] == [
+            (t.header.frame_id, t.child_frame_id) for t in reference.transforms
+        ]
+
+
+def reference_serialize_big_endian(message: Any) -> bytes:
+    """Return the CDR_BE body of a TFMessage, written by the layout rules."""
+    transforms: list[tuple[str, str, int, int, tuple[float, ...]]] = [
+        (
+            t.header.frame_id,
+            t.child_frame_id,
+            t.header.stamp.sec,
+            t.header.stamp.nanosec,
+            (
+                t.transform.translation.x,
+                t.transform.translation.y,
+                t.transform.translation.z,
+                t.transform.rotation.x,
+                t.transform.rotation.y,
+                t.transform.rotation.z,
+                t.transform.rotation.w,
+            ),
+        )
+        for t in message.transforms
+    ]
+    return _big_endian_tf_message(transforms)[4:]
+
+
+def _tf_message(*frames: tuple[str, str]) -> TFMessage:
+    """Return a TFMessage with one transform per (parent, child) pair, distinct poses."""
+    return TFMessage(
+        transforms=[
+            fill_transform_stamped(
+                TransformStamped(), parent, child, 10**9 * index + 7, (float(index), 2.0, 3.0),
+                (0.0, 0.0, 0.0, 1.0),
+            )
+            for index, (parent, child) in enumerate(frames)
+        ]
+    )  # fmt: skip
+
+
+#: More transforms, so that the messages of these tests are long enough to get layouts.
+_MORE = (('base_link', 'laser'), ('base_link', 'camera'))
+
+
+def test_a_different_layout_of_the_same_size_is_decoded_by_its_own_layout() -> None:
+    """Names of other lengths but the same total size are not read with the learnt layout."""
+    learnt = cdr.serialize(_tf_message(('map', 'odom'), ('odom', 'base_link'), *_MORE))
+    _learn_layout(learnt)
+    for frames in [
+        (('map', 'odo'), ('odom', 'base_link')),
+        (('map', 'odom'), ('odom', 'base_lin')),
+        (('m', 'o'), ('odom', 'base_link')),
+        (('ma', 'odom'), ('odom', 'base_link')),
+    ]:
+        other = _tf_message(*frames, *_MORE)
+        data = cdr.serialize(other)
+        assert len(data) == len(learnt)
+        assert cdr.deserialize(TFMessage, data) == other
+        assert [t[:2] for t in cdr.decode_tf_message_transforms(data)] == [*frames, *_MORE]
+    assert cdr.deserialize(TFMessage, learnt) == cdr.deserialize(TFMessage, learnt)
+
+
+def test_a_known_layout_still_rejects_a_missing_nul_and_bad_utf8() -> None:
+    """The layout path checks the NULs and decodes strict UTF-8, naming the field."""
+    learnt = cdr.serialize(_tf_message(('map', 'odom'), ('odom', 'base_link'), *_MORE))
+    _learn_layout(learnt)
+    nul = learnt.index(b'base_link') + len('base_link')
+    missing_nul = learnt[:nul] + b'x' + learnt[nul + 1 :]
+    with pytest.raises(cdr.CdrError, match=r'transforms\[1\]\.child_frame_id'):
+        cdr.deserialize(TFMessage, missing_nul)
+    with pytest.raises(cdr.CdrError, match=r'transforms\[1\]\.child_frame_id'):
+        cdr.decode_tf_message_transforms(missing_nul)
+    bad_utf8 = learnt.replace(b'odom\x00', b'od\xffm\x00', 1)
+    with pytest.raises(cdr.CdrError, match=r'transforms\[0\]\.child_frame_id.*not valid UTF-8'):
+        cdr.deserialize(TFMessage, bad_utf8)

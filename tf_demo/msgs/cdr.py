@@ -92,8 +92,11 @@ def _encoder(msgtype: str) -> Callable[[Any], bytes]:
 
 @functools.cache
 def _decoders(msgtype: str) -> tuple[_codegen.Decoder, _codegen.Decoder]:
-    """Return the generated (big-endian, little-endian) decoders of ``msgtype``."""
-    return _codegen.generate_decoder(msgtype, '>'), _codegen.generate_decoder(msgtype, '<')
+    """Return the (big-endian, little-endian) decoders of ``msgtype`` (generated; tf: layouts)."""
+    big, little = _codegen.generate_decoder(msgtype, '>'), _codegen.generate_decoder(msgtype, '<')
+    if msgtype == _TF_MESSAGE:
+        return _tf_decoder(big, _TF_SHAPES[0]), _tf_decoder(little, _TF_SHAPES[1])
+    return big, little
 
 
 # Per message class (or type name): (msgtype, encoder, decoders), so a call costs one dict lookup.
@@ -216,6 +219,184 @@ def _tf_transforms(buf: bytes) -> list[TransformTuple]:
     return result
 
 
+#: Items of one transform in a whole-message layout: stamp (2), parent length, characters and
+#: NUL, child length, characters and NUL, pose (7).
+_TF_STRIDE = 15
+#: Layouts remembered per byte order (then forgotten all at once) ...
+_MAX_TF_LAYOUTS = 64
+#: ... for messages of this many transforms or more (fewer decode faster without) ...
+_MIN_TF_LAYOUT_TRANSFORMS = 4
+#: ... and at most this many.
+_MAX_TF_LAYOUT_TRANSFORMS = 1024
+
+#: (parent lengths, child lengths, compiled whole-message ``unpack_from`` or None, its size).
+_TfLayout = tuple[
+    tuple[int, ...], tuple[int, ...], Callable[[bytes, int], tuple[Any, ...]] | None, int
+]
+
+
+def _tf_layout_format(endian: str, parents: tuple[int, ...], children: tuple[int, ...]) -> str:
+    """Return the struct format of a whole TFMessage body with these string lengths (NULs in)."""
+    parts = [endian, 'I']
+    end = 4
+    for parent, child in zip(parents, children, strict=True):
+        pad = -end % 4
+        parts.append(f'{pad}xiII{parent - 1}sB' if pad else f'iII{parent - 1}sB')
+        end += pad + 12 + parent
+        pad = -end % 4
+        parts.append(f'{pad}xI{child - 1}sB' if pad else f'I{child - 1}sB')
+        end += pad + 4 + child
+        pad = -end % 8
+        parts.append(f'{pad}x7d' if pad else '7d')
+        end += pad + 56
+    return ''.join(parts)
+
+
+class _TfShapes:
+    """
+    Whole-message structs of the TFMessages seen, by message size, for one byte order.
+
+    A tf publisher sends the same frames again and again, so a TFMessage usually has the layout
+    of the previous one of its size: one ``unpack_from`` of a struct compiled for that layout
+    reads all of it. The count, length fields and NULs it read confirm the layout (each length
+    sits where the lengths before it put it, so all equal means the same layout, to the last
+    byte). A layout is compiled when it is seen the second time in a row for its size; the
+    first sighting only records it, so sizes that change shape every time cost no compiling.
+    """
+
+    def __init__(self, endian: _codegen.Endian) -> None:
+        self.endian = endian
+        self.layouts: dict[int, _TfLayout] = {}
+
+    def read(self, buf: bytes) -> tuple[Any, ...] | None:
+        """Return every field of ``buf`` (count first) if it has the known layout, else None."""
+        layout = self.layouts.get(len(buf))
+        if layout is None:
+            return None
+        parents, children, unpack, _ = layout
+        if unpack is None:
+            return None
+        values = unpack(buf, 4)
+        if (
+            values[3::_TF_STRIDE] != parents
+            or values[6::_TF_STRIDE] != children
+            or values[0] != len(parents)
+            or any(values[5::_TF_STRIDE])
+            or any(values[8::_TF_STRIDE])
+        ):
+            return None
+        return values
+
+    def learn(self, size: int, parents: tuple[int, ...], children: tuple[int, ...]) -> None:
+        """Record the layout of a message of ``size`` bytes just decoded the slow way."""
+        if len(parents) > _MAX_TF_LAYOUT_TRANSFORMS:
+            self.layouts.pop(size, None)
+            return
+        layout = self.layouts.get(size)
+        if layout is not None and layout[0] == parents and layout[1] == children:
+            if layout[2] is None:
+                compiled = Struct(_tf_layout_format(self.endian, parents, children))
+                self.layouts[size] = (parents, children, compiled.unpack_from, compiled.size)
+            return
+        if len(self.layouts) >= _MAX_TF_LAYOUTS:
+            self.layouts.clear()
+        self.layouts[size] = (parents, children, None, 0)
+
+
+_TF_SHAPES = (_TfShapes('>'), _TfShapes('<'))
+
+
+def _tf_message_builder() -> Callable[[tuple[Any, ...]], Message]:
+    """Return the function that builds a TFMessage from the fields :meth:`_TfShapes.read` gave."""
+    new = object.__new__
+    time_class = message_class('builtin_interfaces/msg/Time')
+    header_class = message_class('std_msgs/msg/Header')
+    vector_class = message_class('geometry_msgs/msg/Vector3')
+    quaternion_class = message_class('geometry_msgs/msg/Quaternion')
+    transform_class = message_class('geometry_msgs/msg/Transform')
+    stamped_class = message_class('geometry_msgs/msg/TransformStamped')
+    message_class_ = message_class(_TF_MESSAGE)
+
+    def build(values: tuple[Any, ...]) -> Message:
+        transforms: list[Any] = []
+        append = transforms.append
+        fields = iter(values)
+        next(fields)  # the count
+        for (
+            sec, nanosec, _, parent, _, _, child, _, tx, ty, tz, qx, qy, qz, qw
+        ) in zip(*(fields,) * _TF_STRIDE, strict=True):  # fmt: skip
+            stamp = new(time_class)
+            stamp.sec = sec
+            stamp.nanosec = nanosec
+            header = new(header_class)
+            header.stamp = stamp
+            header.frame_id = parent.decode()
+            translation = new(vector_class)
+            translation.x = tx
+            translation.y = ty
+            translation.z = tz
+            rotation = new(quaternion_class)
+            rotation.x = qx
+            rotation.y = qy
+            rotation.z = qz
+            rotation.w = qw
+            transform = new(transform_class)
+            transform.translation = translation
+            transform.rotation = rotation
+            stamped = new(stamped_class)
+            stamped.header = header
+            stamped.child_frame_id = child.decode()
+            stamped.transform = transform
+            append(stamped)
+        message = new(message_class_)
+        message.transforms = transforms
+        return message
+
+    return build
+
+
+def _tf_decoder(generated: _codegen.Decoder, shapes: _TfShapes) -> _codegen.Decoder:
+    """
+    Wrap the generated TFMessage decoder of one byte order with the whole-message layouts.
+
+    The wrapper is only called by :func:`deserialize`, with the message at ``pos`` 4.
+    """
+    build = _tf_message_builder()
+    read, learn = shapes.read, shapes.learn
+
+    def decode(buf: bytes, pos: int) -> tuple[Any, int]:
+        values = read(buf)
+        if values is not None:
+            return build(values), 4 + shapes.layouts[len(buf)][3]
+        message, end = generated(buf, pos)
+        transforms = message.transforms
+        if len(transforms) < _MIN_TF_LAYOUT_TRANSFORMS:
+            return message, end
+        learn(
+            len(buf),
+            tuple([len(t.header.frame_id.encode()) + 1 for t in transforms]),
+            tuple([len(t.child_frame_id.encode()) + 1 for t in transforms]),
+        )
+        return message, end
+
+    return decode
+
+
+def _tf_tuples(values: tuple[Any, ...]) -> list[TransformTuple]:
+    """Return the transform tuples of the fields :meth:`_TfShapes.read` gave."""
+    fields = iter(values)
+    next(fields)  # the count
+    return [
+        (
+            parent.decode(), child.decode(), sec * 1_000_000_000 + nanosec,
+            (tx, ty, tz), (qx, qy, qz, qw),
+        )
+        for (
+            sec, nanosec, _, parent, _, _, child, _, tx, ty, tz, qx, qy, qz, qw
+        ) in zip(*(fields,) * _TF_STRIDE, strict=True)
+    ]  # fmt: skip
+
+
 def decode_tf_message_transforms(data: bytes | bytearray | memoryview) -> list[TransformTuple]:
     """
     Decode a serialised ``tf2_msgs/msg/TFMessage`` straight into transform tuples.
@@ -227,8 +408,20 @@ def decode_tf_message_transforms(data: bytes | bytearray | memoryview) -> list[T
     """
     buf = data if type(data) is bytes else bytes(data)
     check_header(_TF_MESSAGE, buf)
+    shapes = _TF_SHAPES[buf[1]]
     try:
-        return _tf_transforms(buf)
+        values = shapes.read(buf)
+        if values is not None:
+            return _tf_tuples(values)
+        transforms = _tf_transforms(buf)
+        if len(transforms) < _MIN_TF_LAYOUT_TRANSFORMS:
+            return transforms
+        shapes.learn(
+            len(buf),
+            tuple([len(t[0].encode()) + 1 for t in transforms]),
+            tuple([len(t[1].encode()) + 1 for t in transforms]),
+        )
+        return transforms
     except Exception as exc:
         raise _diagnose(_TF_MESSAGE, buf, exc) from None
 
