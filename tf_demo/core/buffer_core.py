@@ -33,6 +33,7 @@ sign (``spec/tf2.md`` §9 says they are not; the upstream source wins).
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from collections.abc import Callable
 import logging
 import math
@@ -85,6 +86,9 @@ NO_PARENT = 'NO_PARENT'
 
 _LOGGER = logging.getLogger('tf_demo.core')
 _canonical_quat = math3d.canonical_quat
+_bisect_right = bisect_right
+_acos = math.acos
+_sin = math.sin
 _IDENTITY_T: Vec3 = (0.0, 0.0, 0.0)
 _IDENTITY_Q: Quat = (0.0, 0.0, 0.0, 1.0)
 
@@ -144,6 +148,137 @@ def _matrix_apply(m: math3d.Matrix3, v: Vec3) -> Vec3:
 
 def _transpose(m: math3d.Matrix3) -> math3d.Matrix3:
     return ((m[0][0], m[1][0], m[2][0]), (m[0][1], m[1][1], m[2][1]), (m[0][2], m[1][2], m[2][2]))
+
+
+# Outcomes of :func:`_accumulate_side`.
+_SIDE_REACHED_STOP = 0
+_SIDE_NO_CACHE = 1
+_SIDE_NO_DATA = 2
+_SIDE_REACHED_OTHER = 3
+_SIDE_LOOP = 4
+
+SideResult = tuple[int, int, int, int, float, float, float, float, float, float, float]
+
+
+def _accumulate_side(
+    caches: list[Cache | None], frame: int, stop: int, other: int, time_ns: int
+) -> SideResult:
+    """
+    Walk from ``frame`` towards the root, accumulating ``top_T_frame`` (one side of the walk).
+
+    This is one side of tf2's ``walkToTopParent`` with :meth:`TimeCache.get_data` (tf2's
+    ``findClosest`` and ``interpolate``) inlined: per link only locals, no tuple per link.
+    The walk stops at ``stop``, at a frame without cache or data, at ``other`` (once its data
+    was read) or after ``MAX_GRAPH_DEPTH`` steps.
+
+    :returns: ``(outcome, frame, last, depth, x, y, z, qx, qy, qz, qw)``: the outcome
+        (``_SIDE_*``), the frame where the walk stopped, the last frame whose link was
+        accumulated (the start frame when none), the number of links accumulated and the
+        accumulated transform (identity when none).
+    """
+    depth = 0
+    last = frame
+    x = y = z = qx = qy = qz = 0.0
+    qw = 1.0
+    acos = _acos
+    sin = _sin
+    while frame != stop:
+        cache = caches[frame]
+        if cache is None:
+            return _SIDE_NO_CACHE, frame, last, depth, x, y, z, qx, qy, qz, qw
+        if cache.is_static:
+            lx, ly, lz, px, py, pz, pw, parent = cache._sample  # type: ignore[union-attr]
+        else:
+            stamps = cache._stamps  # type: ignore[union-attr]
+            end = len(stamps)
+            start = cache._start  # type: ignore[union-attr]
+            if start == end:
+                return _SIDE_NO_DATA, frame, last, depth, x, y, z, qx, qy, qz, qw
+            samples = cache._samples  # type: ignore[union-attr]
+            if time_ns == 0:
+                lx, ly, lz, px, py, pz, pw, parent = samples[end - 1]
+            else:
+                latest = stamps[end - 1]
+                earliest = stamps[start]
+                if time_ns >= latest:
+                    if time_ns != latest:
+                        return _SIDE_NO_DATA, frame, last, depth, x, y, z, qx, qy, qz, qw
+                    lx, ly, lz, px, py, pz, pw, parent = samples[end - 1]
+                elif time_ns <= earliest:
+                    if time_ns != earliest:
+                        return _SIDE_NO_DATA, frame, last, depth, x, y, z, qx, qy, qz, qw
+                    lx, ly, lz, px, py, pz, pw, parent = samples[start]
+                else:
+                    # Interior: a linear guess (exact for evenly spaced streams), else bisect.
+                    index = start + (time_ns - earliest) * (end - 1 - start) // (latest - earliest)
+                    one_stamp = stamps[index]
+                    if one_stamp <= time_ns:
+                        two_stamp = stamps[index + 1]
+                        if two_stamp <= time_ns:
+                            index = _bisect_right(stamps, time_ns, index + 2, end) - 1
+                            one_stamp = stamps[index]
+                            two_stamp = stamps[index + 1]
+                    else:
+                        index = _bisect_right(stamps, time_ns, start, index) - 1
+                        one_stamp = stamps[index]
+                        two_stamp = stamps[index + 1]
+                    lx, ly, lz, px, py, pz, pw, parent = samples[index]
+                    tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1]
+                    if parent1 == parent:
+                        # tf2's interpolate: lerp the translation, slerp the rotation.
+                        ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)
+                        keep = 1.0 - ratio
+                        lx = keep * lx + ratio * tx1
+                        ly = keep * ly + ratio * ty1
+                        lz = keep * lz + ratio * tz1
+                        dot = px * x1 + py * y1 + pz * z1 + pw * w1
+                        if dot < 0:
+                            theta = acos(-dot if -dot < 1.0 else 1.0)
+                            if theta != 0.0:
+                                d = 1.0 / sin(theta)
+                                s0 = sin(keep * theta) * d
+                                s1 = -sin(ratio * theta) * d
+                                px = px * s0 + x1 * s1
+                                py = py * s0 + y1 * s1
+                                pz = pz * s0 + z1 * s1
+                                pw = pw * s0 + w1 * s1
+                        else:
+                            theta = acos(dot if dot < 1.0 else 1.0)
+                            if theta != 0.0:
+                                d = 1.0 / sin(theta)
+                                s0 = sin(keep * theta) * d
+                                s1 = sin(ratio * theta) * d
+                                px = px * s0 + x1 * s1
+                                py = py * s0 + y1 * s1
+                                pz = pz * s0 + z1 * s1
+                                pw = pw * s0 + w1 * s1
+        if frame == other:
+            return _SIDE_REACHED_OTHER, frame, last, depth, x, y, z, qx, qy, qz, qw
+        if depth:
+            # link * acc.  p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations
+            # than tf2's q * v * conj(q), equal to about 1e-16.
+            ux = 2.0 * (py * z - pz * y)
+            uy = 2.0 * (pz * x - px * z)
+            uz = 2.0 * (px * y - py * x)
+            x, y, z = (
+                x + pw * ux + (py * uz - pz * uy) + lx,
+                y + pw * uy + (pz * ux - px * uz) + ly,
+                z + pw * uz + (px * uy - py * ux) + lz,
+            )
+            qx, qy, qz, qw = (
+                pw * qx + px * qw + py * qz - pz * qy,
+                pw * qy + py * qw + pz * qx - px * qz,
+                pw * qz + pz * qw + px * qy - py * qx,
+                pw * qw - px * qx - py * qy - pz * qz,
+            )
+        else:
+            x, y, z, qx, qy, qz, qw = lx, ly, lz, px, py, pz, pw
+        last = frame
+        frame = parent
+        depth += 1
+        if depth > MAX_GRAPH_DEPTH:
+            return _SIDE_LOOP, frame, last, depth, x, y, z, qx, qy, qz, qw
+    return _SIDE_REACHED_STOP, frame, last, depth, x, y, z, qx, qy, qz, qw
 
 
 def _time_from_sec(seconds: float) -> int:
@@ -499,112 +634,33 @@ class BufferCore:
         caches = self._caches
 
         # Source side: accumulate top_T_source.
-        frame = source_id
-        top = frame
-        depth = 0
-        failed_cache: Cache | None = None
-        first = True
-        sx = sy = sz = 0.0
-        sqx = sqy = sqz = 0.0
-        sqw = 1.0
-        while frame != 0:
-            cache = caches[frame]
-            if cache is None:
-                top = frame
-                break
-            st = cache.get_data(time_ns)
-            if st is None:
-                top = frame
-                failed_cache = cache
-                break
-            if frame == target_id:
-                return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
-            if first:
-                sx, sy, sz, sqx, sqy, sqz, sqw = st[0], st[1], st[2], st[3], st[4], st[5], st[6]
-                first = False
-            else:
-                # p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations than
-                # tf2's q * v * conj(q), equal to about 1e-16.
-                lx, ly, lz, px, py, pz, pw, _ = st
-                ux = 2.0 * (py * sz - pz * sy)
-                uy = 2.0 * (pz * sx - px * sz)
-                uz = 2.0 * (px * sy - py * sx)
-                sx, sy, sz = (
-                    sx + pw * ux + (py * uz - pz * uy) + lx,
-                    sy + pw * uy + (pz * ux - px * uz) + ly,
-                    sz + pw * uz + (px * uy - py * ux) + lz,
-                )
-                sqx, sqy, sqz, sqw = (
-                    pw * sqx + px * sqw + py * sqz - pz * sqy,
-                    pw * sqy + py * sqw + pz * sqx - px * sqz,
-                    pw * sqz + pz * sqw + px * sqy - py * sqx,
-                    pw * sqw - px * sqx - py * sqy - pz * sqz,
-                )
-            top = frame
-            frame = st[7]
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                raise LookupException(self._loop_text())
+        outcome, frame, last, _, sx, sy, sz, sqx, sqy, sqz, sqw = _accumulate_side(
+            caches, source_id, 0, target_id, time_ns
+        )
+        if outcome == _SIDE_REACHED_OTHER:
+            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
+        if outcome == _SIDE_LOOP:
+            raise LookupException(self._loop_text())
+        top = last if outcome == _SIDE_REACHED_STOP else frame
+        failed_cache = caches[frame] if outcome == _SIDE_NO_DATA else None
 
         # Target side: accumulate top_T_target.
-        frame = target_id
-        depth = 0
-        first = True
-        tx = ty = tz = 0.0
-        tqx = tqy = tqz = 0.0
-        tqw = 1.0
-        while frame != top:
-            cache = caches[frame]
-            if cache is None:
-                break
-            st = cache.get_data(time_ns)
-            if st is None:
-                self._walk_error(cache, time_ns, source_id, target_id)
-                raise AssertionError  # pragma: no cover (_walk_error always raises)
-            if frame == source_id:
-                iqx, iqy, iqz, iqw = -tqx, -tqy, -tqz, tqw
-                return (
-                    math3d.rotate_vector((iqx, iqy, iqz, iqw), (-tx, -ty, -tz)),
-                    (
-                        iqx,
-                        iqy,
-                        iqz,
-                        iqw,
-                    ),
-                    time_ns,
-                )
-            if first:
-                tx, ty, tz, tqx, tqy, tqz, tqw = st[0], st[1], st[2], st[3], st[4], st[5], st[6]
-                first = False
-            else:
-                # p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations than
-                # tf2's q * v * conj(q), equal to about 1e-16.
-                lx, ly, lz, px, py, pz, pw, _ = st
-                ux = 2.0 * (py * tz - pz * ty)
-                uy = 2.0 * (pz * tx - px * tz)
-                uz = 2.0 * (px * ty - py * tx)
-                tx, ty, tz = (
-                    tx + pw * ux + (py * uz - pz * uy) + lx,
-                    ty + pw * uy + (pz * ux - px * uz) + ly,
-                    tz + pw * uz + (px * uy - py * ux) + lz,
-                )
-                tqx, tqy, tqz, tqw = (
-                    pw * tqx + px * tqw + py * tqz - pz * tqy,
-                    pw * tqy + py * tqw + pz * tqx - px * tqz,
-                    pw * tqz + pz * tqw + px * tqy - py * tqx,
-                    pw * tqw - px * tqx - py * tqy - pz * tqz,
-                )
-            frame = st[7]
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                raise LookupException(self._loop_text())
-
-        if frame != top:
+        outcome, frame, _, depth, tx, ty, tz, tqx, tqy, tqz, tqw = _accumulate_side(
+            caches, target_id, top, source_id, time_ns
+        )
+        if outcome == _SIDE_NO_DATA:
+            self._walk_error(caches[frame], time_ns, source_id, target_id)  # type: ignore[arg-type]
+        if outcome == _SIDE_REACHED_OTHER:
+            iq = (-tqx, -tqy, -tqz, tqw)
+            return math3d.rotate_vector(iq, (-tx, -ty, -tz)), iq, time_ns
+        if outcome == _SIDE_LOOP:
+            raise LookupException(self._loop_text())
+        if outcome == _SIDE_NO_CACHE:
             if failed_cache is not None:
                 self._walk_error(failed_cache, time_ns, source_id, target_id)
             raise ConnectivityException(self._connectivity_text(source_id, target_id))
 
-        if first:
+        if not depth:
             # The target is the top itself: the inverse of an identity changes nothing.
             return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
         # Full path: (top_T_target)^-1 * top_T_source.
