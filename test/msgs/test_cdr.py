@@ -509,3 +509,33 @@ def test_a_known_layout_still_rejects_a_missing_nul_and_bad_utf8() -> None:
     bad_utf8 = learnt.replace(b'odom\x00', b'od\xffm\x00', 1)
     with pytest.raises(cdr.CdrError, match=r'transforms\[0\]\.child_frame_id.*not valid UTF-8'):
         cdr.deserialize(TFMessage, bad_utf8)
+
+
+@pytest.mark.property
+@settings(max_examples=100, deadline=None)
+@given(
+    transforms=st.lists(
+        message_strategy('geometry_msgs/msg/TransformStamped'), min_size=4, max_size=7
+    )
+)
+def test_known_tf_layouts_encode_like_the_reference(transforms: list[Any]) -> None:
+    """Encoding the same frames again (through the learnt layout) gives the reference bytes."""
+    message = TFMessage(transforms=transforms)
+    expected = reference_serialize('tf2_msgs/msg/TFMessage', message)
+    assert [cdr.serialize(message) for _ in range(3)] == [expected] * 3
+    changed = TFMessage(transforms=[*transforms[1:], transforms[0]])  # other lengths, maybe
+    assert cdr.serialize(changed) == reference_serialize('tf2_msgs/msg/TFMessage', changed)
+
+
+def test_a_known_tf_layout_still_rejects_bad_values_naming_the_field() -> None:
+    """Wrong types and ranges in a message with a learnt layout are reported by field path."""
+    message = _tf_message(('map', 'odom'), ('odom', 'base_link'), *_MORE)
+    cdr.serialize(message)
+    cdr.serialize(message)
+    message.transforms[1].header.stamp.sec = 2**31
+    with pytest.raises(cdr.CdrError, match=r'transforms\[1\]\.header\.stamp\.sec: 2147483648'):
+        cdr.serialize(message)
+    message.transforms[1].header.stamp.sec = 0
+    message.transforms[2].transform.rotation.w = '1'
+    with pytest.raises(cdr.CdrError, match=r'transforms\[2\]\.transform\.rotation\.w: expected'):
+        cdr.serialize(message)

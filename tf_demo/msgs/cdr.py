@@ -86,8 +86,9 @@ def msgtype_of(message_or_type: Any) -> str:
 
 @functools.cache
 def _encoder(msgtype: str) -> Callable[[Any], bytes]:
-    """Return the generated encoder of ``msgtype``."""
-    return _codegen.generate_encoder(msgtype)
+    """Return the encoder of ``msgtype`` (generated; for TFMessage with whole-message layouts)."""
+    generated = _codegen.generate_encoder(msgtype)
+    return _tf_encoder(generated) if msgtype == _TF_MESSAGE else generated
 
 
 @functools.cache
@@ -235,16 +236,24 @@ _TfLayout = tuple[
 ]
 
 
-def _tf_layout_format(endian: str, parents: tuple[int, ...], children: tuple[int, ...]) -> str:
-    """Return the struct format of a whole TFMessage body with these string lengths (NULs in)."""
-    parts = [endian, 'I']
+def _tf_layout_format(
+    endian: str, parents: tuple[int, ...], children: tuple[int, ...], *, encode: bool = False
+) -> str:
+    """
+    Return the struct format of a whole TFMessage body with these string lengths (NULs in).
+
+    A decoder's reads each NUL (``B``, to check it); an encoder's writes it (``x``) and starts
+    with the encapsulation header, written as the uint32 256 (``00 01 00 00``).
+    """
+    parts = [endian, 'II' if encode else 'I']
+    nul = 'x' if encode else 'B'
     end = 4
     for parent, child in zip(parents, children, strict=True):
         pad = -end % 4
-        parts.append(f'{pad}xiII{parent - 1}sB' if pad else f'iII{parent - 1}sB')
+        parts.append(f'{pad}xiII{parent - 1}s{nul}' if pad else f'iII{parent - 1}s{nul}')
         end += pad + 12 + parent
         pad = -end % 4
-        parts.append(f'{pad}xI{child - 1}sB' if pad else f'I{child - 1}sB')
+        parts.append(f'{pad}xI{child - 1}s{nul}' if pad else f'I{child - 1}s{nul}')
         end += pad + 4 + child
         pad = -end % 8
         parts.append(f'{pad}x7d' if pad else '7d')
@@ -380,6 +389,63 @@ def _tf_decoder(generated: _codegen.Decoder, shapes: _TfShapes) -> _codegen.Deco
         return message, end
 
     return decode
+
+
+#: Items of one transform in an encoder's arguments: stamp (2), parent length and bytes, child
+#: length and bytes, pose (7).
+_TF_ENCODE_STRIDE = 13
+#: The encapsulation header CDR_LE as the little-endian uint32 an encoder's layout starts with.
+_CDR_LE_HEADER = 0x100
+
+
+def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
+    """
+    Wrap the generated TFMessage encoder with whole-message layouts.
+
+    The fields of every transform go into one argument list and one ``pack`` writes the
+    message, through a struct looked up by all the string lengths. A layout is compiled the
+    second time its lengths are seen (the generated encoder writes the first); at most
+    ``_MAX_TF_LAYOUTS`` are kept. Whatever fails here fails in the generated encoder too, which
+    :func:`serialize` then asks the reference codec to explain.
+    """
+    packs: dict[tuple[int, ...], Callable[..., bytes]] = {}
+    seen: set[tuple[int, ...]] = set()
+
+    def encode(message: Any) -> bytes:
+        transforms = message.transforms
+        count = len(transforms)
+        if not _MIN_TF_LAYOUT_TRANSFORMS <= count <= _MAX_TF_LAYOUT_TRANSFORMS:
+            return generated(message)
+        fields: list[Any] = [_CDR_LE_HEADER, count]
+        for stamped in transforms:
+            header = stamped.header
+            stamp = header.stamp
+            parent = header.frame_id.encode()
+            child = stamped.child_frame_id.encode()
+            transform = stamped.transform
+            translation = transform.translation
+            rotation = transform.rotation
+            fields += (
+                stamp.sec, stamp.nanosec, len(parent) + 1, parent, len(child) + 1, child,
+                translation.x, translation.y, translation.z,
+                rotation.x, rotation.y, rotation.z, rotation.w,
+            )  # fmt: skip
+        key = tuple(fields[4::_TF_ENCODE_STRIDE] + fields[6::_TF_ENCODE_STRIDE])
+        pack = packs.get(key)
+        if pack is None:
+            if key not in seen:
+                if len(seen) >= _MAX_TF_LAYOUTS:
+                    seen.clear()
+                seen.add(key)
+                return generated(message)
+            if len(packs) >= _MAX_TF_LAYOUTS:
+                packs.clear()
+            pack = packs[key] = Struct(
+                _tf_layout_format('<', key[:count], key[count:], encode=True)
+            ).pack
+        return pack(*fields)
+
+    return encode
 
 
 def _tf_tuples(values: tuple[Any, ...]) -> list[TransformTuple]:
