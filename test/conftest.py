@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from collections.abc import Iterator
 import contextlib
 import fcntl
@@ -26,6 +27,8 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 from typing import IO
 
 from hypothesis import settings
@@ -154,3 +157,101 @@ def spawn(dds_env: dict[str, str], tmp_path: Path) -> Iterator[Processes]:
         yield processes
     finally:
         processes.stop_all()
+
+
+# -- appended by reviewer: one output collector for the child processes of the DDS tests ------
+
+
+class ProcessOutput:
+    """The stdout and stderr lines of a running process, collected by threads as they arrive."""
+
+    def __init__(self, process: subprocess.Popen[str]) -> None:
+        self.process = process
+        self.stdout: list[str] = []
+        self.stderr: list[str] = []
+        self.lines: list[str] = []
+        """Lines of both streams in arrival order."""
+        self._arrived = threading.Condition()
+        for stream, sink in ((process.stdout, self.stdout), (process.stderr, self.stderr)):
+            threading.Thread(target=self._pump, args=(stream, sink), daemon=True).start()
+
+    def _pump(self, stream: IO[str], sink: list[str]) -> None:
+        for raw in stream:
+            line = raw.rstrip('\n')
+            with self._arrived:
+                sink.append(line)
+                self.lines.append(line)
+                self._arrived.notify_all()
+
+    def line_where(self, matches: Callable[[str], bool], timeout: float) -> str | None:
+        """Return the first line (already seen or arriving within ``timeout`` s) that matches."""
+        deadline = time.monotonic() + timeout
+        checked = 0
+        with self._arrived:
+            while True:
+                for line in self.lines[checked:]:
+                    if matches(line):
+                        return line
+                checked = len(self.lines)
+                remaining = deadline - time.monotonic()
+                if remaining <= 0:
+                    return None
+                self._arrived.wait(remaining)
+
+    def wait_for_line(self, text: str, timeout: float = 30.0, *, anywhere: bool = False) -> str:
+        """Return the first line starting with (``anywhere``: containing) ``text``, else fail."""
+        line = self.line_where(
+            (lambda line: text in line) if anywhere else (lambda line: line.startswith(text)),
+            timeout,
+        )
+        if line is None:
+            where = 'containing' if anywhere else 'starting with'
+            pytest.fail(
+                f'no line {where} {text!r} within {timeout} s; '
+                f'stdout={self.stdout} stderr={self.stderr}'
+            )
+        return line
+
+
+class ChildProcess(ProcessOutput):
+    """A command started with piped output (:class:`ProcessOutput`); ``finish`` and ``stop``."""
+
+    def __init__(
+        self, command: list[str], env: dict[str, str], *, finish_timeout: float = 30.0
+    ) -> None:
+        super().__init__(
+            subprocess.Popen(
+                command,
+                env=env,
+                stdin=subprocess.DEVNULL,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.PIPE,
+                text=True,
+            )
+        )
+        self._finish_timeout = finish_timeout
+
+    def finish(self, timeout: float | None = None) -> int:
+        """Wait for the process to exit and return its exit code (output drained)."""
+        code = self.process.wait(timeout=self._finish_timeout if timeout is None else timeout)
+        time.sleep(0.05)  # let the pump threads drain the pipes
+        return code
+
+    def stop(self) -> None:
+        """Kill the process if it still runs."""
+        if self.process.poll() is None:
+            self.process.kill()
+        self.process.wait()
+
+
+@pytest.fixture
+def ros(dds_env: dict[str, str]) -> Iterator[None]:
+    """Initialise the selected backend (DDS) in this process on the test's private domain."""
+    del dds_env
+    from tf_demo import transport
+
+    transport.init(['test'])
+    try:
+        yield
+    finally:
+        transport.shutdown()

@@ -21,12 +21,11 @@ from collections.abc import Iterator
 import itertools
 import math
 from pathlib import Path
-import queue
 import subprocess
-import threading
 import time
 from typing import Any
 
+from conftest import ProcessOutput
 import pytest
 from tf_demo import transport
 from tf_demo.msgs.convert import ns_from_stamp
@@ -53,47 +52,6 @@ def wait_for(condition: Callable[[], bool], timeout_s: float = STARTUP_TIMEOUT_S
             return True
         time.sleep(0.05)
     return condition()
-
-
-class Output:
-    """Collects a process's stdout and stderr lines as they come."""
-
-    def __init__(self, process: subprocess.Popen[str]) -> None:
-        self.lines: queue.Queue[str] = queue.Queue()
-        self.seen: list[str] = []
-        for stream in (process.stdout, process.stderr):
-            threading.Thread(target=self._pump, args=(stream,), daemon=True).start()
-
-    def _pump(self, stream: Any) -> None:
-        for line in stream:
-            self.lines.put(line.rstrip('\n'))
-
-    def wait_for_line(self, fragment: str, timeout_s: float = STARTUP_TIMEOUT_S) -> str:
-        deadline = time.monotonic() + timeout_s
-        for line in self.seen:
-            if fragment in line:
-                return line
-        while time.monotonic() < deadline:
-            try:
-                line = self.lines.get(timeout=0.1)
-            except queue.Empty:
-                continue
-            self.seen.append(line)
-            if fragment in line:
-                return line
-        msg = f'no line containing {fragment!r} within {timeout_s} s; got {self.seen[-5:]}'
-        raise AssertionError(msg)
-
-
-@pytest.fixture
-def ros(dds_env: dict[str, str]) -> Iterator[None]:
-    """Initialise the DDS backend in this process on the test's private domain."""
-    del dds_env
-    transport.init(['test'])
-    try:
-        yield
-    finally:
-        transport.shutdown()
 
 
 @pytest.fixture
@@ -197,7 +155,9 @@ def test_late_listener_gets_static_and_interpolates_the_analytic_circle(
                 assert xyz(out) == pytest.approx(expected_camera_in_odom(yaw, position), abs=1e-6)
                 assert_yaw_quaternion(xyzw(out), yaw)
         late_process = spawn.start('tf_listener', '--ros-args', '-p', 'period:=0.2')
-        line = Output(late_process).wait_for_line('Transform odom <- camera_link at ')
+        line = ProcessOutput(late_process).wait_for_line(
+            'Transform odom <- camera_link at ', STARTUP_TIMEOUT_S, anywhere=True
+        )
         assert line.endswith('z=0.200')
     finally:
         listener.unregister()
@@ -246,12 +206,16 @@ def test_static_tf_pub_bad_parameter_exits_1_with_one_line(spawn: Any, tmp_path:
 def test_tf_listener_warns_then_logs_the_translation(spawn: Any, dds_env: dict[str, str]) -> None:
     """Without data it warns 'Could not transform ...'; with the demo running it logs it."""
     listener = spawn.start('tf_listener', '--ros-args', '-p', 'period:=0.3')
-    output = Output(listener)
-    warning = output.wait_for_line('Could not transform odom to camera_link: ')
+    output = ProcessOutput(listener)
+    warning = output.wait_for_line(
+        'Could not transform odom to camera_link: ', STARTUP_TIMEOUT_S, anywhere=True
+    )
     assert '[WARN]' in warning
     spawn.start('static_tf_pub')
     spawn.start('dynamic_tf_pub')
-    line = output.wait_for_line('Transform odom <- camera_link at ')
+    line = output.wait_for_line(
+        'Transform odom <- camera_link at ', STARTUP_TIMEOUT_S, anywhere=True
+    )
     assert 'z=0.200' in line
 
 
@@ -291,7 +255,9 @@ def test_point_transformer_logs_the_point_in_map(spawn: Any, dds_env: dict[str, 
         '-p', 'translation:=[1.0, 2.0, 0.0]', '-p', 'rotation:=[0.0, 0.0, 1.5707963267948966]',
     )  # fmt: skip
     transformer = spawn.start('point_transformer', '--ros-args', '-p', 'period:=0.3')
-    line = Output(transformer).wait_for_line('Point (1.000, 0.000, 0.000) in base_link is ')
+    line = ProcessOutput(transformer).wait_for_line(
+        'Point (1.000, 0.000, 0.000) in base_link is ', STARTUP_TIMEOUT_S, anywhere=True
+    )
     assert line.endswith('is (1.000, 3.000, 0.000) in map')
 
 

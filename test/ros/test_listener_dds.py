@@ -17,7 +17,6 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from collections.abc import Iterator
 import threading
 import time
 from typing import Any
@@ -51,17 +50,6 @@ def wait_for(condition: Callable[[], bool], timeout_s: float = DISCOVERY_TIMEOUT
             return True
         time.sleep(0.02)
     return condition()
-
-
-@pytest.fixture
-def ros(dds_env: dict[str, str]) -> Iterator[None]:
-    """Initialise the selected backend (DDS) on the test's private domain."""
-    del dds_env
-    transport.init(['test'])
-    try:
-        yield
-    finally:
-        transport.shutdown()
 
 
 class Spinner:

@@ -18,12 +18,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from pathlib import Path
-import queue
-import subprocess
 import sys
-import threading
 import time
 
+from conftest import ChildProcess
 import pytest
 from tf_demo.msgs import cdr
 from tf_demo.msgs import rmw_dds_common
@@ -34,57 +32,11 @@ pytestmark = [pytest.mark.dds, pytest.mark.timeout(120)]
 HELPER = Path(__file__).with_name('dds_peer_node.py')
 
 
-class Peer:
+class Peer(ChildProcess):
     """One helper process; its stdout and stderr lines are collected by reader threads."""
 
     def __init__(self, env: dict[str, str], *args: str) -> None:
-        self.process = subprocess.Popen(
-            [sys.executable, str(HELPER), *args],
-            env=env,
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.PIPE,
-            text=True,
-        )
-        self.lines: queue.Queue[str] = queue.Queue()
-        self.stdout: list[str] = []
-        self.stderr: list[str] = []
-        for stream, sink in (
-            (self.process.stdout, self.stdout),
-            (self.process.stderr, self.stderr),
-        ):
-            threading.Thread(target=self._pump, args=(stream, sink), daemon=True).start()
-
-    def _pump(self, stream: object, sink: list[str]) -> None:
-        for line in stream:  # type: ignore[attr-defined]
-            sink.append(line.rstrip('\n'))
-            self.lines.put(line.rstrip('\n'))
-
-    def wait_for_line(self, prefix: str, timeout: float = 30.0) -> str:
-        """Return the first output line (stdout or stderr) starting with ``prefix``."""
-        deadline = time.monotonic() + timeout
-        for line in list(self.stdout) + list(self.stderr):
-            if line.startswith(prefix):
-                return line
-        while time.monotonic() < deadline:
-            try:
-                line = self.lines.get(timeout=0.1)
-            except queue.Empty:
-                continue
-            if line.startswith(prefix):
-                return line
-        pytest.fail(f'no line starting with {prefix!r}; stdout={self.stdout} stderr={self.stderr}')
-
-    def finish(self, timeout: float = 30.0) -> int:
-        """Wait for the process to exit and return its exit code."""
-        code = self.process.wait(timeout=timeout)
-        time.sleep(0.05)  # let the pump threads drain the pipes
-        return code
-
-    def stop(self) -> None:
-        if self.process.poll() is None:
-            self.process.kill()
-        self.process.wait()
+        super().__init__([sys.executable, str(HELPER), *args], env)
 
 
 @pytest.fixture

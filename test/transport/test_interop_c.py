@@ -24,13 +24,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from pathlib import Path
-import queue
 import shutil
 import subprocess
 import sys
-import threading
 import time
 
+from conftest import ChildProcess
 import pytest
 
 pytestmark = [pytest.mark.dds, pytest.mark.timeout(120)]
@@ -74,64 +73,13 @@ def c_peer_typed(c_toolchain: None, tmp_path_factory: pytest.TempPathFactory) ->
     return _build_peer(tmp_path_factory.mktemp('c_peer_typed'), type_information=True)
 
 
-class Process:
-    """A child process whose output lines are collected as they arrive."""
-
-    def __init__(self, command: list[str], env: dict[str, str]) -> None:
-        self.process = subprocess.Popen(
-            command,
-            env=env,
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.PIPE,
-            text=True,
-        )
-        self.stdout: list[str] = []
-        self.stderr: list[str] = []
-        self._lines: queue.Queue[str] = queue.Queue()
-        for stream, sink in (
-            (self.process.stdout, self.stdout),
-            (self.process.stderr, self.stderr),
-        ):
-            threading.Thread(target=self._pump, args=(stream, sink), daemon=True).start()
-
-    def _pump(self, stream: object, sink: list[str]) -> None:
-        for line in stream:  # type: ignore[attr-defined]
-            sink.append(line.rstrip('\n'))
-            self._lines.put(line.rstrip('\n'))
-
-    def wait_for_line(self, prefix: str, timeout: float = 30.0) -> None:
-        """Wait until an output line starts with ``prefix``."""
-        deadline = time.monotonic() + timeout
-        if any(line.startswith(prefix) for line in self.stdout):
-            return
-        while time.monotonic() < deadline:
-            try:
-                if self._lines.get(timeout=0.1).startswith(prefix):
-                    return
-            except queue.Empty:
-                continue
-        pytest.fail(f'no line starting with {prefix!r}; stdout={self.stdout} stderr={self.stderr}')
-
-    def finish(self, timeout: float = 40.0) -> int:
-        """Wait for exit; return the exit code."""
-        code = self.process.wait(timeout=timeout)
-        time.sleep(0.05)
-        return code
-
-    def stop(self) -> None:
-        if self.process.poll() is None:
-            self.process.kill()
-        self.process.wait()
-
-
 @pytest.fixture
 def run(dds_env: dict[str, str]) -> Iterator[object]:
     """Start processes on the test's private domain (killed at the end if still running)."""
-    started: list[Process] = []
+    started: list[ChildProcess] = []
 
-    def start(*command: str) -> Process:
-        process = Process(list(command), dds_env)
+    def start(*command: str) -> ChildProcess:
+        process = ChildProcess(list(command), dds_env, finish_timeout=40.0)
         started.append(process)
         return process
 

@@ -22,11 +22,11 @@ import math
 from pathlib import Path
 import queue
 import random
-import subprocess
 import threading
 import time
 from typing import Any
 
+from conftest import ProcessOutput
 from hypothesis import given
 from hypothesis import HealthCheck
 from hypothesis import settings
@@ -302,18 +302,8 @@ def test_runtime_parameter_changes_are_validated_and_reload_the_model(world: Wor
     assert children == {'frame_1', 'base_link', 'lidar_link', 'camera_link'}
 
 
-class Running:
+class Running(ProcessOutput):
     """A spawned executable whose output lines are collected in the background."""
-
-    def __init__(self, process: subprocess.Popen[str]) -> None:
-        self.process = process
-        self.lines: list[str] = []
-        for stream in (process.stdout, process.stderr):
-            threading.Thread(target=self._pump, args=(stream,), daemon=True).start()
-
-    def _pump(self, stream: Any) -> None:
-        for line in stream:
-            self.lines.append(line.rstrip('\n'))
 
     def wait_for(self, text: str, timeout: float = 20.0) -> None:
         wait_until(
