@@ -161,6 +161,7 @@ RCLPY_FUNCTIONS: dict[str, list[Param]] = {
     ),
     'shutdown': _params(kw=[('context', None), ('uninstall_handlers', None)]),
     'ok': _params(kw=[('context', None)]),
+    'try_shutdown': _params(kw=[('context', None)]),  # rclpy.utilities.try_shutdown
     'create_node': _params('node_name', kw=_NODE_OPTIONS),
     'spin_once': _params('node', kw=[('executor', None), ('timeout_sec', None)]),
     'spin': _params('node', 'executor', executor=None),
@@ -200,19 +201,6 @@ RCLPY_LOGGER_METHODS = frozenset(
 #: rclpy parameters the standalone backend may leave out (never used by tf_demo's node code).
 UNSUPPORTED_RCLPY_PARAMETERS = frozenset(
     {('init', 'domain_id'), ('init', 'signal_handler_options'), ('shutdown', 'uninstall_handlers')}
-)
-
-#: Known divergences, each filed in /tmp/tf_demo_coord/requests.md (strict: fixing one makes
-#: its test pass, and pytest then reports XPASS as a failure so the mark gets removed).
-FILED_TO_DDS = 'filed to dds by rclpy-audit (requests.md, 09:35 UTC)'
-KNOWN_DIVERGENT = frozenset(
-    {
-        'DdsNode.create_publisher',
-        'DdsNode.create_subscription',
-        'DdsNode.create_timer',
-        'init',
-        'DdsPublisher.wait_for_all_acked',
-    }
 )
 
 
@@ -303,12 +291,7 @@ def _surface_cases() -> Iterator[Any]:
     for name, params in RCLPY_SUBSCRIPTION.items():
         cases.append((f'DdsSubscription.{name}', getattr(dds.DdsSubscription, name), params, True))
     for label, function, params, bound in cases:
-        marks = (
-            [pytest.mark.xfail(strict=True, reason=FILED_TO_DDS)]
-            if label in KNOWN_DIVERGENT
-            else []
-        )
-        yield pytest.param(label, function, params, bound, id=label, marks=marks)
+        yield pytest.param(label, function, params, bound, id=label)
 
 
 @pytest.mark.parametrize(('label', 'function', 'rclpy_params', 'bound'), list(_surface_cases()))
@@ -993,7 +976,6 @@ def _one_transform_message() -> Any:
 
 
 @pytest.mark.dds
-@pytest.mark.xfail(strict=True, reason=FILED_TO_DDS)
 def test_subscription_callback_arity_follows_rclpys_rule(standalone_world: Any) -> None:
     """``cb(msg, info=None)`` gets the message only; a 3-argument callback is refused."""
     from tf_demo.msgs import tf2_msgs
@@ -1019,7 +1001,6 @@ def test_subscription_callback_arity_follows_rclpys_rule(standalone_world: Any) 
 
 
 @pytest.mark.dds
-@pytest.mark.xfail(strict=True, reason=FILED_TO_DDS)
 def test_publish_takes_a_message_or_bytes_only(standalone_world: Any) -> None:
     """Like rclpy's Publisher.publish: bytearray and memoryview raise TypeError."""
     from tf_demo.msgs import cdr
