@@ -831,8 +831,8 @@ def test_both_backends_offer_the_names_the_package_re_exports() -> None:
         if isinstance(statement, ast.Assign)
     }
     forwarded = set(transport._REEXPORTED) | {
-        'init', 'shutdown', 'ok', 'spin', 'spin_once', 'spin_until_future_complete',
-        'create_node',
+        'init', 'shutdown', 'try_shutdown', 'ok', 'spin', 'spin_once',
+        'spin_until_future_complete', 'create_node',
     }  # fmt: skip
     assert forwarded <= defined, forwarded - defined
     assert all(hasattr(dds_backend, name) for name in forwarded)

@@ -123,11 +123,7 @@ def shutdown() -> None:
 
 def try_shutdown() -> None:
     """Shut the backend down unless it already is (``rclpy.try_shutdown``)."""
-    module = backend_module()
-    if hasattr(module, 'try_shutdown'):
-        module.try_shutdown()
-    elif module.ok():
-        module.shutdown()
+    backend_module().try_shutdown()
 
 
 def ok() -> bool:
