@@ -46,6 +46,7 @@ import os
 import re
 import threading
 from typing import Any
+from typing import cast
 from typing import NamedTuple
 
 from cyclonedds import _clayer
@@ -537,8 +538,8 @@ def _withdraw_type_information(topic: int, type_information: bytes) -> None:
 IncompatibleQosHandler = Callable[[str], None]
 
 
-class RawWriter:
-    """A DDS writer that publishes already serialized CDR payloads."""
+class _RawEndpoint:
+    """What writers and readers share: the handle, its GUID, the listener kept alive, deletion."""
 
     def __init__(
         self, participant: DdsParticipant, handle: int, listener: Listener | None
@@ -547,6 +548,18 @@ class RawWriter:
         self.handle = handle
         self._listener = listener
         self.guid = _entity_guid(handle)
+
+    def _delete(self) -> None:
+        """Delete the entity (once) and drop the participant's bookkeeping of it."""
+        if self.handle <= 0:
+            return
+        _lib.dds_delete(self.handle)
+        self._participant.forget(self.handle)
+        self.handle = 0
+
+
+class RawWriter(_RawEndpoint):
+    """A DDS writer that publishes already serialized CDR payloads."""
 
     def write(self, payload: bytes) -> None:
         """Publish one CDR payload (with its 4-byte encapsulation header)."""
@@ -567,25 +580,18 @@ class RawWriter:
 
     def close(self, flush_timeout_ns: int = 0) -> None:
         """Delete the writer, first waiting up to ``flush_timeout_ns`` for acknowledgements."""
-        if self.handle <= 0:
-            return
-        if flush_timeout_ns > 0:
+        if self.handle > 0 and flush_timeout_ns > 0:
             self.wait_for_acks(flush_timeout_ns)
-        _lib.dds_delete(self.handle)
-        self._participant.forget(self.handle)
-        self.handle = 0
+        self._delete()
 
 
-class RawReader:
+class RawReader(_RawEndpoint):
     """A DDS reader that hands back received CDR payloads."""
 
     def __init__(
         self, participant: DdsParticipant, handle: int, listener: Listener | None
     ) -> None:
-        self._participant = participant
-        self.handle = handle
-        self._listener = listener
-        self.guid = _entity_guid(handle)
+        super().__init__(participant, handle, listener)
         self.read_condition = _check(
             _lib.dds_create_readcondition(handle, _NOT_READ_ANY), 'dds_create_readcondition'
         )
@@ -593,18 +599,18 @@ class RawReader:
 
     def take(self, max_samples: int = _TAKE_BATCH) -> list[bytes]:
         """Take up to ``max_samples`` payloads (valid data only), oldest first."""
-        if self.handle <= 0:
-            return []
-        samples = _clayer.ddspy_take(self.handle, _ANY_STATE, max_samples)
-        if isinstance(samples, int):
-            if samples < 0:
-                msg = f'dds_take failed (DDS return code {samples})'
-                raise DdsWireError(msg)
-            return []
-        return [payload for payload, info in samples if info.valid_data]
+        return [payload for payload, info in self._take(max_samples) if info.valid_data]
 
     def take_with_info(self, max_samples: int = _TAKE_BATCH) -> list[tuple[bytes, int, int]]:
         """Take payloads with their source timestamp (ns) and publication handle."""
+        return [
+            (payload, int(info.source_timestamp), int(info.publication_handle))
+            for payload, info in self._take(max_samples)
+            if info.valid_data
+        ]
+
+    def _take(self, max_samples: int) -> list[tuple[bytes, Any]]:
+        """Take up to ``max_samples`` ``(payload, sample_info)`` pairs; none once closed."""
         if self.handle <= 0:
             return []
         samples = _clayer.ddspy_take(self.handle, _ANY_STATE, max_samples)
@@ -613,11 +619,7 @@ class RawReader:
                 msg = f'dds_take failed (DDS return code {samples})'
                 raise DdsWireError(msg)
             return []
-        return [
-            (payload, int(info.source_timestamp), int(info.publication_handle))
-            for payload, info in samples
-            if info.valid_data
-        ]
+        return cast('list[tuple[bytes, Any]]', samples)
 
     def publisher_gid(self, publication_handle: int) -> bytes:
         """Return the 16-byte GUID of the matched writer behind ``publication_handle``."""
@@ -638,11 +640,7 @@ class RawReader:
 
     def close(self) -> None:
         """Delete the reader (and its read condition)."""
-        if self.handle <= 0:
-            return
-        _lib.dds_delete(self.handle)
-        self._participant.forget(self.handle)
-        self.handle = 0
+        self._delete()
 
 
 class WaitSet:
