@@ -174,15 +174,6 @@ RELIABLE_JOINT_STATES = """robot_state_publisher:
 """
 
 
-RELIABLE_JOINT_STATES = """robot_state_publisher:
-  ros__parameters:
-    qos_overrides:
-      /joint_states:
-        subscription:
-          reliability: reliable
-          depth: 100
-"""
-
 # A separate process counts /tf messages (raw CDR, KEEP_ALL reliable) so that the publishing
 # loop's GIL does not slow the counting down; it prints "ready" then, on "stop", the count.
 COUNTER = """
