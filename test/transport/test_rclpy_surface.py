@@ -1187,3 +1187,54 @@ def test_qos_presets_match_rclpys_including_aliases() -> None:
     assert qos.QoSPresetProfiles.get_from_short_key('default') == qos.QoSProfile(depth=10)
     status = qos.QoSPresetProfiles.ACTION_STATUS_DEFAULT.value
     assert (status.depth, status.durability) == (1, qos.DurabilityPolicy.TRANSIENT_LOCAL)
+
+
+LEVEL_METHODS = frozenset({'debug', 'info', 'warning', 'warn', 'error', 'fatal'})
+
+
+def _severity_varies(call: ast.Call) -> bool:
+    """Whether one call expression can log at more than one severity."""
+    func = call.func
+    if isinstance(func, ast.IfExp):
+        branches = (func.body, func.orelse)
+        names = {b.attr for b in branches if isinstance(b, ast.Attribute)}
+        return bool(names & LEVEL_METHODS) and len(names) > 1
+    if isinstance(func, ast.Attribute) and func.attr == 'log' and len(call.args) >= 2:
+        if ast.unparse(func.value).startswith('logging.'):
+            return False  # the standard library's logging, not an rclpy logger
+        return not isinstance(call.args[1], (ast.Constant, ast.Attribute))
+    return False
+
+
+@pytest.mark.xfail(
+    strict=True, reason='robot_state_publisher.py:423, filed to reviewer by rclpy-audit 09:58'
+)
+def test_no_call_site_logs_at_two_severities() -> None:
+    """rclpy raises 'Logger severity cannot be changed between calls.' for such a call site."""
+    # rclpy/rclpy/impl/rcutils_logger.py: contexts keyed by CallerId(function, file, line,
+    # f_lasti); a second call from the same site with another severity raises ValueError.
+    problems: list[str] = []
+    for directory in NODE_CODE_DIRS:
+        for path in sorted((REPO_ROOT / directory).glob('*.py')):
+            tree = ast.parse(path.read_text(encoding='utf-8'))
+            problems.extend(
+                f'{path.relative_to(REPO_ROOT)}:{node.lineno}: {ast.unparse(node)}'
+                for node in ast.walk(tree)
+                if isinstance(node, ast.Call) and _severity_varies(node)
+            )
+    assert problems == []
+
+
+def test_the_severity_check_sees_both_forms() -> None:
+    """Conditional logger methods and ``log(text, variable)`` are reported; constants are not."""
+
+    def call(code: str) -> ast.Call:
+        node = ast.parse(code).body[0].value  # type: ignore[attr-defined]
+        assert isinstance(node, ast.Call)
+        return node
+
+    assert _severity_varies(call('(logger.warning if bad else logger.error)(text)'))
+    assert _severity_varies(call('logger.log(text, level)'))
+    assert not _severity_varies(call('logger.log(text, LoggingSeverity.WARN)'))
+    assert not _severity_varies(call('logger.warning(text)'))
+    assert not _severity_varies(call("logging.getLogger('x').log(level, text)"))
