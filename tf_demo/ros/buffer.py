@@ -397,8 +397,12 @@ class Buffer(BufferCore):
         :return: target_T_source as a ``TransformStamped``.
         :raises TransformException: the core's specific error when it is (still) unavailable.
         """
-        self.can_transform(target_frame, source_frame, time, timeout)
-        return self.lookup_transform_core(target_frame, source_frame, time)
+        time_ns = ns_from_time(time)
+        self._wait_until(
+            lambda: self.can_transform_core(target_frame, source_frame, time_ns)[0],
+            ns_from_duration(timeout),
+        )
+        return self.lookup_transform_core(target_frame, source_frame, time_ns)
 
     def lookup_transform_full(  # noqa: PLR0917 - tf2_ros signature
         self,
@@ -414,12 +418,11 @@ class Buffer(BufferCore):
 
         :return: the transform as a ``TransformStamped``.
         """
-        self.can_transform_full(
-            target_frame, target_time, source_frame, source_time, fixed_frame, timeout
+        query = _full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
+        self._wait_until(
+            lambda: self.can_transform_full_core(*query)[0], ns_from_duration(timeout)
         )
-        return self.lookup_transform_full_core(
-            target_frame, target_time, source_frame, source_time, fixed_frame
-        )
+        return self.lookup_transform_full_core(*query)
 
     def can_transform(  # type: ignore[override]
         self,
