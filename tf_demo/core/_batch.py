@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from tf_demo.core.math3d import quat_multiply_batch
 from tf_demo.core.math3d import rotate_vector_batch
+from tf_demo.core.time_cache import CacheArrays
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
@@ -40,8 +41,12 @@ if TYPE_CHECKING:
     FloatArray = npt.NDArray[np.float64]
     IntArray = npt.NDArray[np.int64]
     BoolArray = npt.NDArray[np.bool_]
+    #: A float (the same for every lane) or one value per lane.
+    Value = float | FloatArray
+    #: A transform as seven values: tx, ty, tz, qx, qy, qz, qw.
+    Link = tuple[Value, Value, Value, Value, Value, Value, Value]
 
-__all__ = ['batch_walk', 'sample_batch']
+__all__ = ['batch_walk', 'batch_walk_uniform', 'sample_batch']
 
 _MAX_GRAPH_DEPTH = 1000
 _ENDING_NONE = 0
@@ -49,54 +54,122 @@ _ENDING_TARGET_PARENT = 1
 _ENDING_SOURCE_PARENT = 2
 _ENDING_FULL = 3
 _IDENTITY_ROW = np.array([[0.0, 0.0, 0.0, 1.0]])
+#: Lanes per pass of :func:`batch_walk_uniform`.
+UNIFORM_CHUNK = 4096
 
 
 def _accumulate(
-    quats: FloatArray, translations: FloatArray, acc_t: FloatArray, acc_q: FloatArray
+    link: FloatArray, acc_t: FloatArray, acc_q: FloatArray
 ) -> tuple[FloatArray, FloatArray]:
-    """Return ``link * acc`` row-wise, with the same formula as the scalar walk."""
-    px, py, pz, pw = quats[:, 0], quats[:, 1], quats[:, 2], quats[:, 3]
+    """
+    Return ``link * acc`` row-wise, with the same formula as the scalar walk.
+
+    ``link`` is ``(M, 7)``; ``acc_t`` / ``acc_q`` are ``(M, 3)`` / ``(M, 4)`` or one row that
+    broadcasts.  The results are column-major views, so each component is contiguous.
+    """
+    if link.shape[0] == 1 and acc_t.shape[0] == 1 and acc_q.shape[0] == 1:
+        return _accumulate_one(link[0].tolist(), acc_t[0].tolist(), acc_q[0].tolist())
+    lx, ly, lz, px, py, pz, pw = (link[:, i] for i in range(7))
     sx, sy, sz = acc_t[:, 0], acc_t[:, 1], acc_t[:, 2]
     ux = 2.0 * (py * sz - pz * sy)
     uy = 2.0 * (pz * sx - px * sz)
     uz = 2.0 * (px * sy - py * sx)
-    new_t = np.stack(
-        (
-            sx + pw * ux + (py * uz - pz * uy),
-            sy + pw * uy + (pz * ux - px * uz),
-            sz + pw * uz + (px * uy - py * ux),
+    rows = max(link.shape[0], acc_t.shape[0], acc_q.shape[0])
+    out = np.empty((7, rows))
+    np.add(sx + pw * ux + (py * uz - pz * uy), lx, out=out[0])
+    np.add(sy + pw * uy + (pz * ux - px * uz), ly, out=out[1])
+    np.add(sz + pw * uz + (px * uy - py * ux), lz, out=out[2])
+    if acc_q.shape[0] == 1 and link.shape[0] == rows:
+        # link * q for one fixed q is linear in the link's quaternion: one matrix product.
+        qx, qy, qz, qw = acc_q[0].tolist()
+        right = np.array(
+            [
+                [qw, qz, -qy, qx],
+                [-qz, qw, qx, qy],
+                [qy, -qx, qw, qz],
+                [-qx, -qy, -qz, qw],
+            ]
+        )
+        np.matmul(right, link[:, 3:7].T, out=out[3:])
+        return out[:3].T, out[3:].T
+    qx, qy, qz, qw = acc_q[:, 0], acc_q[:, 1], acc_q[:, 2], acc_q[:, 3]
+    np.subtract(pw * qx + px * qw + py * qz, pz * qy, out=out[3])
+    np.subtract(pw * qy + py * qw + pz * qx, px * qz, out=out[4])
+    np.subtract(pw * qz + pz * qw + px * qy, py * qx, out=out[5])
+    np.subtract(pw * qw - px * qx - py * qy, pz * qz, out=out[6])
+    return out[:3].T, out[3:].T
+
+
+def _accumulate_one(
+    link: list[float], acc_t: list[float], acc_q: list[float]
+) -> tuple[FloatArray, FloatArray]:
+    """Return ``link * acc`` for one row (static links) in plain floats, as the scalar walk."""
+    lx, ly, lz, px, py, pz, pw = link
+    sx, sy, sz = acc_t
+    qx, qy, qz, qw = acc_q
+    ux = 2.0 * (py * sz - pz * sy)
+    uy = 2.0 * (pz * sx - px * sz)
+    uz = 2.0 * (px * sy - py * sx)
+    return (
+        np.array(
+            [
+                [
+                    sx + pw * ux + (py * uz - pz * uy) + lx,
+                    sy + pw * uy + (pz * ux - px * uz) + ly,
+                    sz + pw * uz + (px * uy - py * ux) + lz,
+                ]
+            ]
         ),
-        axis=-1,
+        np.array(
+            [
+                [
+                    pw * qx + px * qw + py * qz - pz * qy,
+                    pw * qy + py * qw + pz * qx - px * qz,
+                    pw * qz + pz * qw + px * qy - py * qx,
+                    pw * qw - px * qx - py * qy - pz * qz,
+                ]
+            ]
+        ),
     )
-    new_t += translations
-    return new_t, quat_multiply_batch(quats, acc_q)
 
 
-def _interpolate(
-    columns: FloatArray, slerp: FloatArray, older: IntArray, ratio: FloatArray
-) -> FloatArray:
+def _interpolate(arrays: CacheArrays, older: IntArray, ratio: FloatArray) -> FloatArray:
     """
     Interpolate samples ``older`` and ``older + 1`` at ``ratio``, as TimeCache.get_data.
 
-    ``columns`` is ``(7, K)``; ``slerp`` holds the per-interval slerp constants.
+    :returns: ``(M, 7)`` (a column-major view: each component is contiguous).
     """
+    result: FloatArray = _interpolate_rows(arrays, older, ratio).T
+    return result
+
+
+def _interpolate_rows(arrays: CacheArrays, older: IntArray, ratio: FloatArray) -> FloatArray:
+    """Return :func:`_interpolate`'s result as ``(7, M)``: one contiguous row per component."""
+    take = np.take
+    rows = arrays.intervals
     keep = 1.0 - ratio
-    newer = older + 1
     out = np.empty((7, older.shape[0]))
     for i in range(3):
-        np.add(keep * np.take(columns[i], older), ratio * np.take(columns[i], newer), out=out[i])
-    theta = np.take(slerp[0], older)
-    inverse_sin = np.take(slerp[1], older)
-    s0 = np.sin(keep * theta) * inverse_sin
-    s1 = np.sin(ratio * theta) * (inverse_sin * np.take(slerp[2], older))
-    for i in range(3, 7):
-        one = np.take(columns[i], older)
-        np.add(one * s0, np.take(columns[i], newer) * s1, out=out[i])
-    still = theta == 0.0
-    if still.any():  # a zero angle returns the older rotation unchanged, as tf2's slerp
-        out[3:, still] = columns[3:, older[still]]
-    result: FloatArray = out.T
-    return result
+        row = out[i]
+        np.multiply(take(rows[i], older), keep, out=row)
+        row += take(rows[3 + i], older) * ratio
+    theta = take(rows[14], older)
+    scales = np.empty((2, older.shape[0]))
+    np.multiply(keep, theta, out=scales[0])
+    np.multiply(ratio, theta, out=scales[1])
+    np.sin(scales, out=scales)
+    scales *= take(rows[15], older)
+    s0 = scales[0]
+    s1 = scales[1]
+    for i in range(4):
+        row = out[3 + i]
+        np.multiply(take(rows[6 + i], older), s0, out=row)
+        row += take(rows[10 + i], older) * s1
+    if arrays.any_still:
+        still = theta == 0.0
+        if still.any():  # a zero angle returns the older rotation unchanged, as tf2's slerp
+            out[3:, still] = rows[6:10, older[still]]
+    return out
 
 
 def _older_indices(stamps: IntArray, times: IntArray) -> IntArray:
@@ -110,7 +183,8 @@ def _older_indices(stamps: IntArray, times: IntArray) -> IntArray:
     span = float(stamps[-1] - stamps[0])
     guess: IntArray = ((times - stamps[0]).astype(np.float64) * (last / span)).astype(np.int64)
     np.clip(guess, 0, last - 1, out=guess)
-    hit = (np.take(stamps, guess) <= times) & (np.take(stamps, guess + 1) > times)
+    hit = np.take(stamps, guess) <= times
+    hit &= np.take(stamps, guess + 1) > times
     if not hit.all():
         miss = ~hit
         guess[miss] = np.searchsorted(stamps, times[miss], side='right') - 1
@@ -134,7 +208,10 @@ def sample_batch(
             np.array([sample[7]], dtype=np.int64),
             None,
         )
-    stamps, columns, parent_ids, slerp = cache.arrays()
+    arrays = cache.arrays()
+    stamps = arrays.stamps
+    columns = arrays.values
+    parent_ids = arrays.parents
     size = stamps.shape[0]
     if size == 0:
         return np.zeros((1, 7)), np.zeros(1, dtype=np.int64), np.zeros(count, dtype=bool)
@@ -143,13 +220,13 @@ def sample_batch(
     if size > 1 and count and times.min() > earliest and times.max() < latest:
         # Fast path: every lane is strictly inside the history.
         older = _older_indices(stamps, times)
-        one_parent = parent_ids[older]
-        one_stamp = stamps[older]
-        ratio = (times - one_stamp).astype(np.float64) / (stamps[older + 1] - one_stamp).astype(
-            np.float64
-        )
-        values = _interpolate(columns, slerp, older, ratio)
-        switched = one_parent != parent_ids[older + 1]
+        ratio = (times - np.take(stamps, older)).astype(np.float64)
+        ratio /= np.take(arrays.intervals[16], older)
+        values = _interpolate(arrays, older, ratio)
+        if not arrays.any_parent_change:
+            return values, parent_ids[:1], None
+        one_parent = np.take(parent_ids, older)
+        switched = one_parent != np.take(parent_ids, older + 1)
         if switched.any():
             values[switched] = columns[:, older[switched]].T
         return values, one_parent, None
@@ -176,11 +253,9 @@ def sample_batch(
             lanes = lanes[same_parent]
             older = older[same_parent]
             if lanes.size:
-                one_stamp = stamps[older]
-                ratio = (lane_times[same_parent] - one_stamp).astype(np.float64) / (
-                    stamps[older + 1] - one_stamp
-                ).astype(np.float64)
-                values[lanes] = _interpolate(columns, slerp, older, ratio)
+                ratio = (lane_times[same_parent] - stamps[older]).astype(np.float64)
+                ratio /= arrays.intervals[16, older]
+                values[lanes] = _interpolate(arrays, older, ratio)
                 parents[lanes] = parent_ids[older]
                 single[lanes] = -2
     chosen = single >= 0
@@ -188,6 +263,187 @@ def sample_batch(
     parents[chosen] = parent_ids[single[chosen]]
     ok = single != -1
     return values, parents, None if ok.all() else ok
+
+
+def _compose(link: Link, acc: Link) -> Link:
+    """Return ``link * acc`` on floats or lane arrays, with the scalar walk's formula."""
+    lx, ly, lz, px, py, pz, pw = link
+    sx, sy, sz, qx, qy, qz, qw = acc
+    ux = 2.0 * (py * sz - pz * sy)
+    uy = 2.0 * (pz * sx - px * sz)
+    uz = 2.0 * (px * sy - py * sx)
+    return (
+        sx + pw * ux + (py * uz - pz * uy) + lx,
+        sy + pw * uy + (pz * ux - px * uz) + ly,
+        sz + pw * uz + (px * uy - py * ux) + lz,
+        pw * qx + px * qw + py * qz - pz * qy,
+        pw * qy + py * qw + pz * qx - px * qz,
+        pw * qz + pz * qw + px * qy - py * qx,
+        pw * qw - px * qx - py * qy - pz * qz,
+    )
+
+
+def _uniform_parent(cache: TimeCache | StaticCache, earliest: int, latest: int) -> int | None:
+    """
+    Return the link's parent if it is the same for every lane and has data strictly inside.
+
+    ``earliest`` / ``latest`` bound the lanes' times.  None when the link needs the general
+    walk (parent changes, or some lane at or beyond an end of the history).
+    """
+    if isinstance(cache, StaticCache):
+        return cache.get_parent(0)
+    arrays = cache.arrays()
+    stamps = arrays.stamps
+    if (
+        arrays.any_parent_change
+        or stamps.shape[0] < 2
+        or not stamps[0] < earliest
+        or not latest < stamps[-1]
+    ):
+        return None
+    return int(arrays.parents[0])
+
+
+def _chain_product(links: list[TimeCache | StaticCache], times: IntArray) -> Link:
+    """Return ``top_T_bottom`` of ``links`` (bottom first) at every lane's time."""
+    acc: Link = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+    first = True
+    for cache in links:
+        if isinstance(cache, StaticCache):
+            lx, ly, lz, px, py, pz, pw, _ = cache.get_data(0)
+            link: Link = (lx, ly, lz, px, py, pz, pw)
+        else:
+            arrays = cache.arrays()
+            stamps = arrays.stamps
+            older = _older_indices(stamps, times)
+            ratio = (times - np.take(stamps, older)).astype(np.float64)
+            ratio /= np.take(arrays.intervals[16], older)
+            rows = _interpolate_rows(arrays, older, ratio)
+            link = (rows[0], rows[1], rows[2], rows[3], rows[4], rows[5], rows[6])
+        acc = link if first else _compose(link, acc)
+        first = False
+    return acc
+
+
+def _inverse(t: Link) -> Link:
+    """Return ``t^-1`` as the scalar walk computes it (conjugate, then rotate ``-t``)."""
+    tx, ty, tz, qx, qy, qz, qw = t
+    ix, iy, iz, iw = -qx, -qy, -qz, qw
+    # rotate_vector((ix, iy, iz, iw), (-tx, -ty, -tz)) with math3d's operation order.
+    vx, vy, vz = -tx, -ty, -tz
+    rx = iw * vx + iy * vz - iz * vy
+    ry = iw * vy + iz * vx - ix * vz
+    rz = iw * vz + ix * vy - iy * vx
+    rw = -ix * vx - iy * vy - iz * vz
+    return (
+        rw * -ix + rx * iw + ry * -iz - rz * -iy,
+        rw * -iy + ry * iw + rz * -ix - rx * -iz,
+        rw * -iz + rz * iw + rx * -iy - ry * -ix,
+        ix,
+        iy,
+        iz,
+        iw,
+    )
+
+
+def _inverse_times(inverse: Link, source: Link) -> Link:
+    """Return ``inverse * source`` as the scalar walk's full-path step (math3d's order)."""
+    ox, oy, oz, ix, iy, iz, iw = inverse
+    sx, sy, sz, sqx, sqy, sqz, sqw = source
+    rx = iw * sx + iy * sz - iz * sy
+    ry = iw * sy + iz * sx - ix * sz
+    rz = iw * sz + ix * sy - iy * sx
+    rw = -ix * sx - iy * sy - iz * sz
+    return (
+        (rw * -ix + rx * iw + ry * -iz - rz * -iy) + ox,
+        (rw * -iy + ry * iw + rz * -ix - rx * -iz) + oy,
+        (rw * -iz + rz * iw + rx * -iy - ry * -ix) + oz,
+        iw * sqx + ix * sqw + iy * sqz - iz * sqy,
+        iw * sqy + iy * sqw + iz * sqx - ix * sqz,
+        iw * sqz + iz * sqw + ix * sqy - iy * sqx,
+        iw * sqw - ix * sqx - iy * sqy - iz * sqz,
+    )
+
+
+def batch_walk_uniform(
+    caches: Sequence[TimeCache | StaticCache | None],
+    target_id: int,
+    source_id: int,
+    times: IntArray,
+) -> tuple[FloatArray, FloatArray] | None:
+    """
+    Walk tf2's path once for all lanes when every lane takes the same links; else None.
+
+    Applies when, along the path, no link changes parent and every lane's time is strictly
+    inside every dynamic link's history (so no lane can fail): the links are found once and
+    each is read for all lanes at once.  Returns raw ``target_T_source`` ``(N, 3)`` and
+    ``(N, 4)``, equal to :func:`batch_walk`'s; None means "use :func:`batch_walk`".
+    """
+    count = times.shape[0]
+    if not count:
+        return None
+    earliest = int(times.min())
+    latest = int(times.max())
+    if earliest <= 0:
+        return None  # time 0 means "latest" to a cache: leave it to the general walk
+    source_links: list[TimeCache | StaticCache] = []
+    frame = source_id
+    top = frame
+    ending = _ENDING_NONE
+    while frame != 0:
+        cache = caches[frame]
+        if cache is None:
+            top = frame
+            break
+        parent = _uniform_parent(cache, earliest, latest)
+        if parent is None:
+            return None
+        if frame == target_id:
+            ending = _ENDING_TARGET_PARENT
+            break
+        source_links.append(cache)
+        top = frame
+        frame = parent
+        if len(source_links) > _MAX_GRAPH_DEPTH:
+            return None
+    target_links: list[TimeCache | StaticCache] = []
+    if ending == _ENDING_NONE:
+        frame = target_id
+        while frame != top:
+            cache = caches[frame]
+            if cache is None:
+                return None
+            parent = _uniform_parent(cache, earliest, latest)
+            if parent is None:
+                return None
+            if frame == source_id:
+                ending = _ENDING_SOURCE_PARENT
+                break
+            target_links.append(cache)
+            frame = parent
+            if len(target_links) > _MAX_GRAPH_DEPTH:
+                return None
+    translations = np.empty((count, 3))
+    rotations = np.empty((count, 4))
+    # Chunks keep the temporaries small: in cache, and reused by the allocator instead of
+    # being handed back to the system and faulted in again.
+    for begin in range(0, count, UNIFORM_CHUNK):
+        end = min(begin + UNIFORM_CHUNK, count)
+        chunk = times[begin:end]
+        if ending == _ENDING_SOURCE_PARENT:
+            result = _inverse(_chain_product(target_links, chunk))
+        elif target_links:
+            result = _inverse_times(
+                _inverse(_chain_product(target_links, chunk)),
+                _chain_product(source_links, chunk),
+            )
+        else:
+            result = _chain_product(source_links, chunk)
+        for column in range(3):
+            translations[begin:end, column] = result[column]
+        for column in range(4):
+            rotations[begin:end, column] = result[3 + column]
+    return translations, rotations
 
 
 def batch_walk(
@@ -323,9 +579,8 @@ def _side_walk(
                 )
                 active[_all(lanes)] = False
                 continue
-            quats = values[:, 3:]
             if lanes is None:
-                acc_t, acc_q = _accumulate(quats, values[:, :3], acc_t, acc_q)
+                acc_t, acc_q = _accumulate(values, acc_t, acc_q)
                 frame[:] = parents
                 if source_side:
                     top[:] = frame_id
@@ -334,9 +589,7 @@ def _side_walk(
                     acc_t = np.repeat(acc_t, count, axis=0)
                 if acc_q.shape[0] != count:
                     acc_q = np.repeat(acc_q, count, axis=0)
-                acc_t[lanes], acc_q[lanes] = _accumulate(
-                    quats, values[:, :3], acc_t[lanes], acc_q[lanes]
-                )
+                acc_t[lanes], acc_q[lanes] = _accumulate(values, acc_t[lanes], acc_q[lanes])
                 frame[lanes] = parents
                 if source_side:
                     top[lanes] = frame_id

@@ -46,6 +46,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from tf_demo.core import math3d
 from tf_demo.core._batch import batch_walk
+from tf_demo.core._batch import batch_walk_uniform
 from tf_demo.core.exceptions import BackwardExtrapolationException
 from tf_demo.core.exceptions import ConnectivityException
 from tf_demo.core.exceptions import ExtrapolationException
@@ -87,6 +88,8 @@ NO_PARENT = 'NO_PARENT'
 _LOGGER = logging.getLogger('tf_demo.core')
 _canonical_quat = math3d.canonical_quat
 _bisect_right = bisect_right
+#: Lanes per pass of :meth:`BufferCore.lookup_transforms`.
+_BATCH_CHUNK = 4096
 _acos = math.acos
 _sin = math.sin
 _IDENTITY_T: Vec3 = (0.0, 0.0, 0.0)
@@ -1081,16 +1084,27 @@ class BufferCore:
                     resolved[latest_wanted] = self._latest_common_time(target_id, source_id)
                 except TransformException:
                     common_time_failed = True
-            translations, rotations, failed = batch_walk(
-                self._caches, target_id, source_id, resolved
-            )
-            if common_time_failed:
-                failed |= latest_wanted
-            for index in np.flatnonzero(failed):
-                t, q, _ = self._walk(target_id, source_id, int(times[index]))
-                translations[index] = t
-                rotations[index] = q
-        return translations, math3d.canonical_quat_batch(rotations)
+            uniform = batch_walk_uniform(self._caches, target_id, source_id, resolved)
+            if uniform is not None:
+                return uniform[0], math3d.canonical_quat_batch(uniform[1], out=uniform[1])
+            translations = np.empty((count, 3))
+            rotations = np.empty((count, 4))
+            # Chunks keep every temporary small (in cache, and reused by the allocator
+            # instead of being returned to the system and faulted in again on every call).
+            for begin in range(0, count, _BATCH_CHUNK):
+                end = min(begin + _BATCH_CHUNK, count)
+                chunk_t, chunk_q, failed = batch_walk(
+                    self._caches, target_id, source_id, resolved[begin:end]
+                )
+                if common_time_failed:
+                    failed |= latest_wanted[begin:end]
+                for index in np.flatnonzero(failed).tolist():
+                    t, q, _ = self._walk(target_id, source_id, int(times[begin + index]))
+                    chunk_t[index] = t
+                    chunk_q[index] = q
+                translations[begin:end] = chunk_t
+                rotations[begin:end] = math3d.canonical_quat_batch(chunk_q)
+        return translations, rotations
 
     # ------------------------------------------------------------------ introspection
 

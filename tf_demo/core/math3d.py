@@ -516,13 +516,18 @@ def quat_from_matrix_batch(m: npt.NDArray[np.float64]) -> npt.NDArray[np.float64
     return out
 
 
-def canonical_quat_batch(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+def canonical_quat_batch(
+    q: npt.NDArray[np.float64], out: npt.NDArray[np.float64] | None = None
+) -> npt.NDArray[np.float64]:
     """
     Row-wise :func:`canonical_quat`, without building the matrices.
 
     The sign is chosen with the same matrix diagonal (same arithmetic) as tf2's
     ``getRotation``; the magnitude is ``q / |q|``, which equals the matrix route to about
     1e-16.
+
+    :param out: ``(N, 4)`` array to write into (may be ``q`` itself); a new C-contiguous one
+        by default.
     """
     x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
     d = x * x + y * y + z * z + w * w
@@ -534,8 +539,15 @@ def canonical_quat_batch(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
         m00 = 1.0 - (yy + zz)
         m11 = 1.0 - (xx + zz)
         m22 = 1.0 - (xx + yy)
-        trace = m00 + m11 + m22
-        largest = np.where(m00 < m11, np.where(m11 < m22, 2, 1), np.where(m00 < m22, 2, 0))
-        pivot = np.where(trace > 0.0, w, np.take_along_axis(q, largest[:, None], axis=1)[:, 0])
-        scale = np.where(pivot < 0.0, -1.0, 1.0) / np.sqrt(d)
-    return q * scale[:, None]
+        positive = (m00 + m11 + m22) > 0.0
+        if positive.all():
+            pivot = w  # the common case: tf2 makes w positive
+        else:
+            largest = np.where(m00 < m11, np.where(m11 < m22, 2, 1), np.where(m00 < m22, 2, 0))
+            pivot = np.where(positive, w, np.choose(largest, (x, y, z)))
+        scale = np.where(pivot < 0.0, -1.0, 1.0)
+        scale /= np.sqrt(d)
+    if out is None:
+        out = np.empty((q.shape[0], 4))
+    np.multiply(q, scale[:, None], out=out)
+    return out

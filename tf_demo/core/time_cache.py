@@ -56,6 +56,8 @@ __all__ = [
     'ERROR_FORWARD_EXTRAPOLATION',
     'ERROR_LOOKUP',
     'ERROR_NO_DATA_FOR_EXTRAPOLATION',
+    'INTERVAL_COLUMNS',
+    'CacheArrays',
     'Sample',
     'StaticCache',
     'TimeCache',
@@ -89,6 +91,31 @@ class TransformStorage(NamedTuple):
     rotation: tuple[float, float, float, float]
     parent_id: int
     child_id: int
+
+
+#: Rows of :attr:`CacheArrays.intervals`, one column per interval between samples k and k + 1:
+#: older translation (3), newer translation (3), older rotation (4), newer rotation with the
+#: slerp sign applied (4), slerp angle, ``1 / sin(angle)`` (0 for a zero angle), and the
+#: interval length in ns as a float.
+INTERVAL_COLUMNS = 17
+
+
+class CacheArrays(NamedTuple):
+    """A :class:`TimeCache`'s live samples as numpy arrays, with per-interval constants."""
+
+    version: int
+    #: ``(K,)`` ascending stamps.
+    stamps: npt.NDArray[np.int64]
+    #: ``(7, K)``: one contiguous row per component (tx, ty, tz, qx, qy, qz, qw).
+    values: npt.NDArray[np.float64]
+    #: ``(K,)`` parent ids.
+    parents: npt.NDArray[np.int64]
+    #: ``(INTERVAL_COLUMNS, K - 1)`` lerp / slerp constants, one contiguous row each.
+    intervals: npt.NDArray[np.float64]
+    #: Some interval has a zero slerp angle (its rotation is the older one, as tf2).
+    any_still: bool
+    #: Some interval changes parent (no interpolation across it).
+    any_parent_change: bool
 
 
 def duration_to_sec(duration_ns: int) -> float:
@@ -147,16 +174,7 @@ class TimeCache:
         self._version = 0
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
         self.latest: tuple[int, int] = (0, 0)
-        self._arrays: (
-            tuple[
-                int,
-                npt.NDArray[np.int64],
-                npt.NDArray[np.float64],
-                npt.NDArray[np.int64],
-                npt.NDArray[np.float64],
-            ]
-            | None
-        ) = None
+        self._arrays: CacheArrays | None = None
 
     # --- insertion -----------------------------------------------------------------------
 
@@ -362,39 +380,45 @@ class TimeCache:
             for s in (self._samples[index],)
         ]
 
-    def arrays(
-        self,
-    ) -> tuple[
-        npt.NDArray[np.int64],
-        npt.NDArray[np.float64],
-        npt.NDArray[np.int64],
-        npt.NDArray[np.float64],
-    ]:
+    def arrays(self) -> CacheArrays:
         """
-        Return the live samples as numpy arrays, ascending by stamp.
+        Return the live samples as numpy arrays, ascending by stamp (for the batch walk).
 
-        :returns: stamps ``(K,)``; values ``(7, K)`` (one contiguous row per component: tx, ty,
-            tz, qx, qy, qz, qw); parent ids ``(K,)``; and per interval ``k`` (between samples
-            ``k`` and ``k + 1``) the slerp constants ``(3, K - 1)``: angle, ``1 / sin(angle)``
-            (0 for a zero angle) and the sign applied to the newer quaternion.  Cached until
-            the next change; treat them as read-only.
+        Cached until the next change (insert, prune, clear); treat them as read-only.
         """
         cached = self._arrays
-        if cached is not None and cached[0] == self._version:
-            return cached[1], cached[2], cached[3], cached[4]
+        if cached is not None and cached.version == self._version:
+            return cached
         start = self._start
         stamps = np.array(self._stamps[start:], dtype=np.int64)
-        table = np.array(self._samples[start:], dtype=np.float64).reshape(-1, 8).T
-        values = np.ascontiguousarray(table[:7])
-        parents = table[7].astype(np.int64)
-        q = values[3:]
-        dot = np.einsum('ij,ij->j', q[:, :-1], q[:, 1:])
+        table = np.array(self._samples[start:], dtype=np.float64).reshape(-1, 8)
+        values = np.ascontiguousarray(table[:, :7].T)
+        parents = table[:, 7].astype(np.int64)
+        count = stamps.shape[0]
+        intervals = np.empty((INTERVAL_COLUMNS, max(count - 1, 0)))
+        q0 = values[3:, :-1]
+        q1 = values[3:, 1:]
+        dot = np.einsum('ij,ij->j', q0, q1)
         theta = np.arccos(np.minimum(np.abs(dot), 1.0))
+        intervals[0:3] = values[:3, :-1]
+        intervals[3:6] = values[:3, 1:]
+        intervals[6:10] = q0
+        intervals[10:14] = q1 * np.where(dot < 0, -1.0, 1.0)
+        intervals[14] = theta
         with np.errstate(divide='ignore'):
-            inverse_sin = np.where(theta != 0.0, 1.0 / np.sin(theta), 0.0)
-        slerp = np.stack((theta, inverse_sin, np.where(dot < 0, -1.0, 1.0)))
-        self._arrays = (self._version, stamps, values, parents, slerp)
-        return stamps, values, parents, slerp
+            intervals[15] = np.where(theta != 0.0, 1.0 / np.sin(theta), 0.0)
+        intervals[16] = np.diff(stamps).astype(np.float64)
+        arrays = CacheArrays(
+            self._version,
+            stamps,
+            values,
+            parents,
+            intervals,
+            bool((theta == 0.0).any()),
+            bool((parents[1:] != parents[:-1]).any()),
+        )
+        self._arrays = arrays
+        return arrays
 
 
 class StaticCache:
