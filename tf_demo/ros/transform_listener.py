@@ -101,6 +101,12 @@ class TransformListener:
         self.raw_decoding = _can_decode_raw(host, buffer)
         if self.raw_decoding:
             extra['raw'] = True
+            from tf_demo.core.buffer_core import BufferCore
+            from tf_demo.msgs import cdr
+
+            self._decode_transforms = cdr.decode_tf_message_transforms
+            self._decode_error = cdr.CdrError
+            self._core_insert = BufferCore.set_transform
         from tf_demo.transport.messages import tf2_msgs
 
         self.tf_sub: Any = None
@@ -162,20 +168,18 @@ class TransformListener:
 
     def _insert_raw(self, data: bytes, *, is_static: bool) -> None:
         """Decode serialised TFMessage bytes straight into the core (no message objects)."""
-        from tf_demo.core.buffer_core import BufferCore
-        from tf_demo.msgs.cdr import CdrError
-        from tf_demo.msgs.cdr import decode_tf_message_transforms
-
-        self.buffer.note_feeder_thread()
+        buffer = self.buffer
+        buffer.note_feeder_thread()
         try:
-            transforms = decode_tf_message_transforms(data)
-        except CdrError as error:
+            transforms = self._decode_transforms(data)
+        except self._decode_error as error:
             self.node.get_logger().error(f'Dropping a malformed TFMessage: {error}')
             return
+        insert = self._core_insert
         for parent, child, stamp_ns, translation, rotation in transforms:
             try:
-                BufferCore.set_transform(
-                    self.buffer,
+                insert(
+                    buffer,
                     parent,
                     child,
                     stamp_ns,
@@ -185,10 +189,7 @@ class TransformListener:
                     is_static,
                 )
             except Exception as error:
-                self.node.get_logger().error(
-                    f'Failure to set received transform from {child} to {parent} '
-                    f'with error: {error}'
-                )
+                self._log_insert_failure(parent, child, error)
 
     def _insert_all(self, data: Any, *, is_static: bool) -> None:
         note = getattr(self.buffer, 'note_feeder_thread', None)
@@ -199,11 +200,13 @@ class TransformListener:
             try:
                 insert(transform, DEFAULT_AUTHORITY)
             except Exception as error:
-                self._log_insert_failure(transform, error)
+                self._log_insert_failure(
+                    getattr(getattr(transform, 'header', None), 'frame_id', '?'),
+                    getattr(transform, 'child_frame_id', '?'),
+                    error,
+                )
 
-    def _log_insert_failure(self, transform: Any, error: Exception) -> None:
-        parent = getattr(getattr(transform, 'header', None), 'frame_id', '?')
-        child = getattr(transform, 'child_frame_id', '?')
+    def _log_insert_failure(self, parent: str, child: str, error: Exception) -> None:
         self.node.get_logger().error(
             f'Failure to set received transform from {child} to {parent} with error: {error}'
         )
