@@ -23,6 +23,7 @@ import pickle
 import numpy
 import pytest
 from tf_demo.msgs import builtin_interfaces
+from tf_demo.msgs import cdr
 from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import nav_msgs
 from tf_demo.msgs import rmw_dds_common
@@ -30,6 +31,7 @@ from tf_demo.msgs import rosgraph_msgs
 from tf_demo.msgs import sensor_msgs
 from tf_demo.msgs import std_msgs
 from tf_demo.msgs import tf2_msgs
+from tf_demo.msgs._message import blank_instance_maker
 from tf_demo.msgs._message import message_class
 from tf_demo.msgs._message import REGISTRY
 from tf_demo.msgs._schema import DEFINITIONS
@@ -122,8 +124,30 @@ def test_keyword_constructor_sets_fields_and_rejects_unknown_names() -> None:
         TypeError, match=r'Point\(\) got unknown field\(s\) w; its fields are: x, y, z'
     ):
         geometry_msgs.Point(w=1.0)
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match=r'Point\(\) takes keyword arguments only'):
         geometry_msgs.Point(1.0)  # rclpy takes keywords only
+    assert type(geometry_msgs.Point(x=2.0)) is geometry_msgs.Point
+    assert geometry_msgs.Point(x=2.0) == geometry_msgs.Point(x=2.0, y=0.0)
+
+
+def test_blank_instances_are_the_public_classes_with_no_fields_set() -> None:
+    """The decoders' instance maker gives a plain instance: no defaults, no other class."""
+    make = blank_instance_maker(geometry_msgs.Vector3)
+    blank = make()
+    assert type(blank) is geometry_msgs.Vector3
+    with pytest.raises(AttributeError):
+        _ = blank.x
+    blank.x, blank.y, blank.z = 1.0, 2.0, 3.0
+    assert blank == geometry_msgs.Vector3(x=1.0, y=2.0, z=3.0)
+    assert repr(blank) == 'geometry_msgs.msg.Vector3(x=1.0, y=2.0, z=3.0)'
+    decoded = cdr.deserialize(
+        tf2_msgs.TFMessage,
+        cdr.serialize(tf2_msgs.TFMessage(transforms=[geometry_msgs.TransformStamped()] * 5)),
+    )
+    stamped = decoded.transforms[4]
+    assert type(stamped) is geometry_msgs.TransformStamped
+    assert type(stamped.header.stamp) is builtin_interfaces.Time
+    assert type(stamped.transform.rotation) is geometry_msgs.Quaternion
 
 
 def test_slots_reject_attributes_that_are_not_fields() -> None:

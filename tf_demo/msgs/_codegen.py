@@ -36,6 +36,7 @@ from typing import Any
 from typing import Literal
 
 import numpy
+from tf_demo.msgs._message import blank_instance_maker
 from tf_demo.msgs._message import message_class
 from tf_demo.msgs._schema import FieldSpec
 from tf_demo.msgs._schema import MessageSpec
@@ -194,7 +195,6 @@ class _Builder:
             '_array': array,
             '_numpy': numpy,
             '_ZEROS': ZEROS,
-            '_new': object.__new__,
         }
         self.indent = 1
         self.counter = 0
@@ -513,9 +513,9 @@ class _DecoderBuilder(_Builder):
         """Read one message of ``spec`` inline; return the local that will hold the object."""
         values = [(field.name, self.field_value(field)) for field in spec.fields]
         var = self.name('m')
-        cls = self.constant('C', message_class(spec.msgtype))
+        make = self.constant('K', blank_instance_maker(message_class(spec.msgtype)))
         assignments = ''.join(f'; {var}.{name} = {value}' for name, value in values)
-        self.builds.append(f'{var} = _new({cls}){assignments}')
+        self.builds.append(f'{var} = {make}(){assignments}')
         return var
 
 

@@ -17,17 +17,20 @@ The message base class; each subclass gets its slots and methods from the schema
 
 A package module declares ``class Vector3(Message): ...``; the metaclass looks up
 ``geometry_msgs/msg/Vector3`` in :data:`tf_demo.msgs._schema.SPECS` and generates ``__slots__``,
-a keyword-only ``__init__`` with rclpy's defaults, ``__eq__``, an rclpy-like ``__repr__`` and the
+a keyword-only constructor with rclpy's defaults, ``__eq__``, an rclpy-like ``__repr__`` and the
 class attributes ``__msgtype__``, ``__dds_typename__`` and ``__typehash__``.
 """
 
 from __future__ import annotations
 
 from array import array
+from collections.abc import Callable
 import importlib
 from typing import Any
+from typing import cast
 from typing import ClassVar
 from typing import TYPE_CHECKING
+from typing import TypeVar
 
 import numpy
 from tf_demo.msgs._schema import FieldSpec
@@ -36,6 +39,8 @@ from tf_demo.msgs._schema import PRIMITIVES
 from tf_demo.msgs._schema import rclpy_field_type
 from tf_demo.msgs._schema import spec_for
 from tf_demo.msgs.typehash import type_hash
+
+MessageT = TypeVar('MessageT', bound='Message')
 
 #: Every generated message class, by ``pkg/msg/Name``.
 REGISTRY: dict[str, type[Message]] = {}
@@ -63,8 +68,14 @@ def _sequence_equal(left: Any, right: Any) -> bool:
         return False
 
 
-def _reject_unknown(cls: type, unknown: dict[str, Any]) -> None:
-    """Raise the error for keyword arguments that are not fields of ``cls``."""
+def _reject_arguments(cls: type, positional: tuple[Any, ...], unknown: dict[str, Any]) -> None:
+    """Raise the error for positional arguments or keyword arguments that are not fields."""
+    if positional:
+        count = len(positional)
+        msg = (
+            f'{cls.__name__}() takes keyword arguments only (as in rclpy), got {count} positional'
+        )
+        raise TypeError(msg)
     names = ', '.join(sorted(unknown))
     fields = ', '.join(cls.__slots__)  # type: ignore[attr-defined]
     msg = f'{cls.__name__}() got unknown field(s) {names}; its fields are: {fields}'
@@ -98,12 +109,24 @@ def _default_source(field: FieldSpec, namespace: dict[str, Any]) -> tuple[str, b
     return f'[{PRIMITIVES[field.base].default!r}] * {field.size}', True
 
 
+def blank_instance_maker(cls: type[MessageT]) -> Callable[[], MessageT]:
+    """
+    Return a function that makes an instance of the message class ``cls`` with no field set.
+
+    It calls ``type.__call__`` on the class, which runs no Python code (the classes have no
+    ``__init__``; their keyword constructor is their metaclass's ``__call__``): the fastest way
+    to make objects there is, for decoders that then set every field.
+    """
+    make: Callable[[], MessageT] = type.__call__.__get__(cls)
+    return make
+
+
 def _generate_methods(spec: MessageSpec) -> dict[str, Any]:
-    """Generate ``__init__``, ``__eq__`` and ``__repr__`` for ``spec`` as straight-line code."""
+    """Generate the keyword constructor (a metaclass ``__call__``) and ``__eq__`` for ``spec``."""
     namespace: dict[str, Any] = {
         '_array': array,
         '_numpy': numpy,
-        '_reject_unknown': _reject_unknown,
+        '_reject_arguments': _reject_arguments,
         '_sequence_equal': _sequence_equal,
     }
     params = []
@@ -119,10 +142,12 @@ def _generate_methods(spec: MessageSpec) -> dict[str, Any]:
             params.append(f'{field.name}={default}')
             body.append(f'    self.{field.name} = {field.name}')
     lines = [
-        f'def __init__(self, *, {", ".join(params)}, **unknown):',
-        '    if unknown:',
-        '        _reject_unknown(type(self), unknown)',
+        f'def __call__(cls_, /, *positional_, {"".join(p + ", " for p in params)}**unknown_):',
+        '    if unknown_ or positional_:',
+        '        _reject_arguments(cls_, positional_, unknown_)',
+        '    self = _make()',
         *body,
+        '    return self',
         '',
         'def __eq__(self, other):',
         '    if type(other) is not type(self):',
@@ -137,7 +162,12 @@ def _generate_methods(spec: MessageSpec) -> dict[str, Any]:
     lines += ['    return True', '']
     namespace['_Message'] = Message
     exec(compile('\n'.join(lines), f'<tf_demo.msgs {spec.msgtype}>', 'exec'), namespace)
-    return {'__init__': namespace['__init__'], '__eq__': namespace['__eq__']}
+    # The caller binds ``_make`` (the class's blank_instance_maker) once the class exists.
+    return {
+        '__call__': namespace['__call__'],
+        '__eq__': namespace['__eq__'],
+        '_globals': namespace,
+    }
 
 
 def _field_repr(field: FieldSpec, value: Any) -> str:
@@ -149,7 +179,13 @@ def _field_repr(field: FieldSpec, value: Any) -> str:
 
 
 class _MessageMeta(type):
-    """Build a message class from its entry in the schema table."""
+    """
+    Build a message class from its entry in the schema table.
+
+    Each class gets its own metaclass (``Metaclass_<Name>``, as rclpy's generated classes do)
+    whose ``__call__`` is the class's generated keyword constructor, so that the class itself
+    has no ``__init__`` and :func:`blank_instance_maker` makes instances without Python code.
+    """
 
     def __new__(
         mcs,
@@ -170,10 +206,17 @@ class _MessageMeta(type):
         namespace['_fields_and_field_types'] = {
             field.name: rclpy_field_type(field) for field in spec.fields
         }
-        namespace.update(_generate_methods(spec))
-        cls = super().__new__(mcs, name, bases, namespace)
-        REGISTRY[spec.msgtype] = cls  # type: ignore[assignment]
-        return cls
+        methods = _generate_methods(spec)
+        namespace['__eq__'] = methods['__eq__']
+        metaclass = type(
+            f'Metaclass_{name}',
+            (mcs,),
+            {'__call__': methods['__call__'], '__module__': module},
+        )
+        cls: Any = super().__new__(metaclass, name, bases, namespace)
+        methods['_globals']['_make'] = blank_instance_maker(cls)
+        REGISTRY[spec.msgtype] = cls
+        return cast('_MessageMeta', cls)
 
 
 class Message(metaclass=_MessageMeta):

@@ -30,6 +30,7 @@ from typing import Any
 from typing import TypeVar
 
 from tf_demo.msgs import _codegen
+from tf_demo.msgs._message import blank_instance_maker
 from tf_demo.msgs._message import Message
 from tf_demo.msgs._message import message_class
 from tf_demo.msgs._reference import CdrError
@@ -317,14 +318,13 @@ _TF_SHAPES = (_TfShapes('>'), _TfShapes('<'))
 
 def _tf_message_builder() -> Callable[[tuple[Any, ...]], Message]:
     """Return the function that builds a TFMessage from the fields :meth:`_TfShapes.read` gave."""
-    new = object.__new__
-    time_class = message_class('builtin_interfaces/msg/Time')
-    header_class = message_class('std_msgs/msg/Header')
-    vector_class = message_class('geometry_msgs/msg/Vector3')
-    quaternion_class = message_class('geometry_msgs/msg/Quaternion')
-    transform_class = message_class('geometry_msgs/msg/Transform')
-    stamped_class = message_class('geometry_msgs/msg/TransformStamped')
-    message_class_ = message_class(_TF_MESSAGE)
+    new_time = blank_instance_maker(message_class('builtin_interfaces/msg/Time'))
+    new_header = blank_instance_maker(message_class('std_msgs/msg/Header'))
+    new_vector = blank_instance_maker(message_class('geometry_msgs/msg/Vector3'))
+    new_quaternion = blank_instance_maker(message_class('geometry_msgs/msg/Quaternion'))
+    new_transform = blank_instance_maker(message_class('geometry_msgs/msg/Transform'))
+    new_stamped = blank_instance_maker(message_class('geometry_msgs/msg/TransformStamped'))
+    new_message = blank_instance_maker(message_class(_TF_MESSAGE))
 
     def build(values: tuple[Any, ...]) -> Message:
         transforms: list[Any] = []
@@ -334,30 +334,30 @@ def _tf_message_builder() -> Callable[[tuple[Any, ...]], Message]:
         for (
             sec, nanosec, _, parent, _, _, child, _, tx, ty, tz, qx, qy, qz, qw
         ) in zip(*(fields,) * _TF_STRIDE, strict=True):  # fmt: skip
-            stamp = new(time_class)
+            stamp = new_time()
             stamp.sec = sec
             stamp.nanosec = nanosec
-            header = new(header_class)
+            header = new_header()
             header.stamp = stamp
             header.frame_id = parent.decode()
-            translation = new(vector_class)
+            translation = new_vector()
             translation.x = tx
             translation.y = ty
             translation.z = tz
-            rotation = new(quaternion_class)
+            rotation = new_quaternion()
             rotation.x = qx
             rotation.y = qy
             rotation.z = qz
             rotation.w = qw
-            transform = new(transform_class)
+            transform = new_transform()
             transform.translation = translation
             transform.rotation = rotation
-            stamped = new(stamped_class)
+            stamped = new_stamped()
             stamped.header = header
             stamped.child_frame_id = child.decode()
             stamped.transform = transform
             append(stamped)
-        message = new(message_class_)
+        message = new_message()
         message.transforms = transforms
         return message
 
