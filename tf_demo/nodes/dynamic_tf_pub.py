@@ -28,11 +28,11 @@ import sys
 from tf_demo.ros.node_helpers import as_float
 from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_positive_float
-from tf_demo.ros.node_helpers import declare_flexible
+from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.node_helpers import make_transform_stamped
-from tf_demo.ros.node_helpers import NodeConfigError
 from tf_demo.ros.node_helpers import now_ns
 from tf_demo.ros.node_helpers import Quat
+from tf_demo.ros.node_helpers import require_distinct_frames
 from tf_demo.ros.node_helpers import Vec3
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import Node
@@ -56,17 +56,11 @@ class DynamicTfPublisher(Node):  # type: ignore[misc]  # Node is the backend's c
     def __init__(self) -> None:
         """Read the parameters and start the timer."""
         super().__init__(NODE_NAME)
-        self.radius = as_float('radius', declare_flexible(self, 'radius', 1.0))
-        self.rate = as_positive_float('rate', declare_flexible(self, 'rate', 20.0))
-        self.parent_frame = as_frame(
-            'parent_frame', declare_flexible(self, 'parent_frame', 'odom')
-        )
-        self.child_frame = as_frame(
-            'child_frame', declare_flexible(self, 'child_frame', 'base_link')
-        )
-        if self.parent_frame == self.child_frame:
-            msg = f'parent_frame and child_frame are both {self.parent_frame!r}'
-            raise NodeConfigError(msg)
+        self.radius = declare_checked(self, 'radius', 1.0, as_float)
+        self.rate = declare_checked(self, 'rate', 20.0, as_positive_float)
+        self.parent_frame = declare_checked(self, 'parent_frame', 'odom', as_frame)
+        self.child_frame = declare_checked(self, 'child_frame', 'base_link', as_frame)
+        require_distinct_frames(self.parent_frame, self.child_frame)
         self.broadcaster = TransformBroadcaster(self)
         self.timer = self.create_timer(1.0 / self.rate, self.publish_once)
         self.get_logger().info(

@@ -27,10 +27,10 @@ import sys
 from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_positive_float
 from tf_demo.ros.node_helpers import as_vector3
-from tf_demo.ros.node_helpers import declare_flexible
+from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.node_helpers import make_transform_stamped
-from tf_demo.ros.node_helpers import NodeConfigError
 from tf_demo.ros.node_helpers import now_ns
+from tf_demo.ros.node_helpers import require_distinct_frames
 from tf_demo.ros.node_helpers import rotation_from_values
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import Node
@@ -45,22 +45,12 @@ class FrameBroadcaster(Node):  # type: ignore[misc]  # Node is the backend's cla
     def __init__(self) -> None:
         """Read the parameters and start the timer."""
         super().__init__(NODE_NAME)
-        self.parent_frame = as_frame(
-            'parent_frame', declare_flexible(self, 'parent_frame', 'base_link')
-        )
-        self.child_frame = as_frame(
-            'child_frame', declare_flexible(self, 'child_frame', 'camera_link')
-        )
-        if self.parent_frame == self.child_frame:
-            msg = f'parent_frame and child_frame are both {self.parent_frame!r}'
-            raise NodeConfigError(msg)
-        self.translation = as_vector3(
-            'translation', declare_flexible(self, 'translation', [0.1, 0.2, 0.3])
-        )
-        self.rotation = rotation_from_values(
-            'rotation', declare_flexible(self, 'rotation', [0.0, 0.0, 0.0])
-        )
-        period = as_positive_float('period', declare_flexible(self, 'period', 0.5))
+        self.parent_frame = declare_checked(self, 'parent_frame', 'base_link', as_frame)
+        self.child_frame = declare_checked(self, 'child_frame', 'camera_link', as_frame)
+        require_distinct_frames(self.parent_frame, self.child_frame)
+        self.translation = declare_checked(self, 'translation', [0.1, 0.2, 0.3], as_vector3)
+        self.rotation = declare_checked(self, 'rotation', [0.0, 0.0, 0.0], rotation_from_values)
+        period = declare_checked(self, 'period', 0.5, as_positive_float)
         self.broadcaster = TransformBroadcaster(self)
         self.timer = self.create_timer(period, self.publish_once)
 

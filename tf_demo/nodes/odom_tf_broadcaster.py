@@ -26,6 +26,7 @@ import sys
 from typing import Any
 
 from tf_demo.ros.node_helpers import as_frame
+from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.node_helpers import declare_flexible
 from tf_demo.ros.node_helpers import NodeConfigError
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
@@ -70,8 +71,8 @@ class OdomTfBroadcaster(Node):  # type: ignore[misc]  # Node is the backend's cl
         from tf_demo.transport.messages import geometry_msgs
         from tf_demo.transport.messages import nav_msgs
 
-        self.odom_frame = as_frame('odom_frame', declare_flexible(self, 'odom_frame', 'odom'))
-        self.base_frame = as_frame('base_frame', declare_flexible(self, 'base_frame', 'base_link'))
+        self.odom_frame = declare_checked(self, 'odom_frame', 'odom', as_frame)
+        self.base_frame = declare_checked(self, 'base_frame', 'base_link', as_frame)
         topic = declare_flexible(self, 'odom_topic', '/odom')
         if not isinstance(topic, str) or not topic:
             msg = f"parameter 'odom_topic' must be a topic name, got {topic!r}"

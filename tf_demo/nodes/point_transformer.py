@@ -30,7 +30,7 @@ from tf_demo.ros.buffer import Buffer
 from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_positive_float
 from tf_demo.ros.node_helpers import as_vector3
-from tf_demo.ros.node_helpers import declare_flexible
+from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.transform_listener import TransformListener
 from tf_demo.transport import Node
 from tf_demo.transport import run_node
@@ -55,12 +55,10 @@ class PointTransformer(Node):  # type: ignore[misc]  # Node is the backend's cla
         super().__init__(NODE_NAME)
         from tf_demo.transport.messages import geometry_msgs
 
-        self.source_frame = as_frame(
-            'source_frame', declare_flexible(self, 'source_frame', 'base_link')
-        )
-        self.target_frame = as_frame('target_frame', declare_flexible(self, 'target_frame', 'map'))
-        x, y, z = as_vector3('point', declare_flexible(self, 'point', [1.0, 0.0, 0.0]))
-        period = as_positive_float('period', declare_flexible(self, 'period', 1.0))
+        self.source_frame = declare_checked(self, 'source_frame', 'base_link', as_frame)
+        self.target_frame = declare_checked(self, 'target_frame', 'map', as_frame)
+        x, y, z = declare_checked(self, 'point', [1.0, 0.0, 0.0], as_vector3)
+        period = declare_checked(self, 'period', 1.0, as_positive_float)
         self.point = geometry_msgs.PointStamped()
         self.point.header.frame_id = self.source_frame
         self.point.point.x, self.point.point.y, self.point.point.z = x, y, z

@@ -30,7 +30,7 @@ from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.ros.buffer import Buffer
 from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_positive_float
-from tf_demo.ros.node_helpers import declare_flexible
+from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.transform_listener import TransformListener
 from tf_demo.transport import Node
 from tf_demo.transport import run_node
@@ -59,13 +59,9 @@ class TfListenerNode(Node):  # type: ignore[misc]  # Node is the backend's class
     def __init__(self) -> None:
         """Read the parameters, subscribe to TF and start the timer."""
         super().__init__(NODE_NAME)
-        self.target_frame = as_frame(
-            'target_frame', declare_flexible(self, 'target_frame', 'odom')
-        )
-        self.source_frame = as_frame(
-            'source_frame', declare_flexible(self, 'source_frame', 'camera_link')
-        )
-        period = as_positive_float('period', declare_flexible(self, 'period', 1.0))
+        self.target_frame = declare_checked(self, 'target_frame', 'odom', as_frame)
+        self.source_frame = declare_checked(self, 'source_frame', 'camera_link', as_frame)
+        period = declare_checked(self, 'period', 1.0, as_positive_float)
         self.tf_buffer = Buffer(node=self)
         self.tf_listener = TransformListener(self.tf_buffer, self)
         self.timer = self.create_timer(period, self.on_timer)

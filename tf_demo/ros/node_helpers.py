@@ -22,9 +22,11 @@ errors (:class:`NodeConfigError`) that name the parameter.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from collections.abc import Sequence
 import math
 from typing import Any
+from typing import TypeVar
 
 from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.msgs.convert import fill_transform_stamped
@@ -38,14 +40,17 @@ __all__ = [
     'as_frame',
     'as_positive_float',
     'as_vector3',
+    'declare_checked',
     'declare_flexible',
     'make_transform_stamped',
     'now_ns',
+    'require_distinct_frames',
     'rotation_from_values',
 ]
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
+T = TypeVar('T')
 
 
 def declare_flexible(node: Any, name: str, default: Any) -> Any:
@@ -54,6 +59,18 @@ def declare_flexible(node: Any, name: str, default: Any) -> Any:
 
     descriptor = ParameterDescriptor(dynamic_typing=True)
     return node.declare_parameter(name, default, descriptor).value
+
+
+def declare_checked(node: Any, name: str, default: Any, check: Callable[[str, Any], T]) -> T:
+    """Declare ``name`` as :func:`declare_flexible` does; return ``check(name, value)``."""
+    return check(name, declare_flexible(node, name, default))
+
+
+def require_distinct_frames(parent_frame: str, child_frame: str) -> None:
+    """Raise :class:`NodeConfigError` when ``parent_frame`` and ``child_frame`` are the same."""
+    if parent_frame == child_frame:
+        msg = f'parent_frame and child_frame are both {parent_frame!r}'
+        raise NodeConfigError(msg)
 
 
 def as_float(name: str, value: Any) -> float:
