@@ -420,7 +420,11 @@ def _build_node_class() -> type:
             if problem is not None:
                 level, text = problem
                 logger = self.get_logger()
-                (logger.warning if level == 30 else logger.error)(text)
+                # one call site per severity: rclpy's loggers refuse a severity change per site
+                if level == 30:
+                    logger.warning(text)
+                else:
+                    logger.error(text)
                 return
             now_ns = self.get_clock().now().nanoseconds
             if self._throttle.clock_moved_backwards(now_ns):
