@@ -539,3 +539,23 @@ def test_a_known_tf_layout_still_rejects_bad_values_naming_the_field() -> None:
     message.transforms[2].transform.rotation.w = '1'
     with pytest.raises(cdr.CdrError, match=r'transforms\[2\]\.transform\.rotation\.w: expected'):
         cdr.serialize(message)
+    message.transforms[2].transform.rotation.w = 1.0
+    message.transforms[3].child_frame_id = b'camera'
+    with pytest.raises(cdr.CdrError, match=r'transforms\[3\]\.child_frame_id: expected str'):
+        cdr.serialize(message)
+
+
+def test_a_known_tf_layout_encodes_new_and_non_ascii_names() -> None:
+    """Names met for the first time, str subclasses and UTF-8 names encode as the reference."""
+
+    class FrameName(str):
+        __slots__ = ()
+
+    message = _tf_message(('map', 'odom'), ('odom', 'base_link'), *_MORE)
+    cdr.serialize(message)
+    cdr.serialize(message)
+    message.transforms[0].header.frame_id = FrameName('wörld')
+    message.transforms[1].child_frame_id = 'base_link_' + 'x' * 300
+    for _ in range(3):
+        assert cdr.serialize(message) == reference_serialize('tf2_msgs/msg/TFMessage', message)
+    assert cdr.deserialize(TFMessage, cdr.serialize(message)) == message

@@ -394,6 +394,9 @@ def _tf_decoder(generated: _codegen.Decoder, shapes: _TfShapes) -> _codegen.Deco
 #: Items of one transform in an encoder's arguments: stamp (2), parent length and bytes, child
 #: length and bytes, pose (7).
 _TF_ENCODE_STRIDE = 13
+#: Frame names up to this long are kept encoded, up to this many (then all are forgotten).
+_MAX_CACHED_NAME = 256
+_MAX_CACHED_NAMES = 4096
 #: The encapsulation header CDR_LE as the little-endian uint32 an encoder's layout starts with.
 _CDR_LE_HEADER = 0x100
 
@@ -410,6 +413,17 @@ def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
     """
     packs: dict[tuple[int, ...], Callable[..., bytes]] = {}
     seen: set[tuple[int, ...]] = set()
+    # Frame name -> (CDR length, UTF-8 bytes): the same few names come again and again.
+    names: dict[str, tuple[int, bytes]] = {}
+
+    def name(text: str) -> tuple[int, bytes]:
+        encoded = text.encode()
+        entry = (len(encoded) + 1, encoded)
+        if len(text) <= _MAX_CACHED_NAME and type(text) is str:
+            if len(names) >= _MAX_CACHED_NAMES:
+                names.clear()
+            names[text] = entry
+        return entry
 
     def encode(message: Any) -> bytes:
         transforms = message.transforms
@@ -420,13 +434,19 @@ def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
         for stamped in transforms:
             header = stamped.header
             stamp = header.stamp
-            parent = header.frame_id.encode()
-            child = stamped.child_frame_id.encode()
+            try:
+                parent_length, parent = names[header.frame_id]
+            except KeyError:
+                parent_length, parent = name(header.frame_id)
+            try:
+                child_length, child = names[stamped.child_frame_id]
+            except KeyError:
+                child_length, child = name(stamped.child_frame_id)
             transform = stamped.transform
             translation = transform.translation
             rotation = transform.rotation
             fields += (
-                stamp.sec, stamp.nanosec, len(parent) + 1, parent, len(child) + 1, child,
+                stamp.sec, stamp.nanosec, parent_length, parent, child_length, child,
                 translation.x, translation.y, translation.z,
                 rotation.x, rotation.y, rotation.z, rotation.w,
             )  # fmt: skip
