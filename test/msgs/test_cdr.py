@@ -559,3 +559,17 @@ def test_a_known_tf_layout_encodes_new_and_non_ascii_names() -> None:
     for _ in range(3):
         assert cdr.serialize(message) == reference_serialize('tf2_msgs/msg/TFMessage', message)
     assert cdr.deserialize(TFMessage, cdr.serialize(message)) == message
+
+
+def test_tf_layout_caches_stay_within_their_budget(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Compiled layouts never cover more transforms than the budget; decoding stays right."""
+    monkeypatch.setattr(cdr, '_TF_LAYOUT_BUDGET', 12)
+    shapes = cdr._TF_SHAPES[1]
+    for length in range(1, 9):
+        message = _tf_message(*[('p' * length, f'child_{index}') for index in range(5)])
+        data = cdr.serialize(message)
+        for _ in range(3):
+            assert cdr.deserialize(TFMessage, data) == message
+            assert cdr.serialize(message) == reference_serialize('tf2_msgs/msg/TFMessage', message)
+        assert shapes.layouts[len(data)][2] is not None
+        assert shapes.compiled <= 12

@@ -230,6 +230,9 @@ _MAX_TF_LAYOUTS = 64
 _MIN_TF_LAYOUT_TRANSFORMS = 4
 #: ... and at most this many.
 _MAX_TF_LAYOUT_TRANSFORMS = 1024
+#: Compiled layouts of one cache together cover at most this many transforms (a struct takes
+#: about 300 bytes per transform), else the cache starts again.
+_TF_LAYOUT_BUDGET = 8192
 
 #: (parent lengths, child lengths, compiled whole-message ``unpack_from`` or None, its size).
 _TfLayout = tuple[
@@ -277,13 +280,18 @@ class _TfShapes:
     def __init__(self, endian: _codegen.Endian) -> None:
         self.endian = endian
         self.layouts: dict[int, _TfLayout] = {}
+        self.compiled = 0  # transforms covered by the compiled layouts
 
-    def read(self, buf: bytes) -> tuple[Any, ...] | None:
-        """Return every field of ``buf`` (count first) if it has the known layout, else None."""
+    def read(self, buf: bytes) -> tuple[tuple[Any, ...], int] | None:
+        """
+        Return every field of ``buf`` (count first) and the end of the message, or None.
+
+        None means that ``buf`` does not have the layout known for its size (or none is).
+        """
         layout = self.layouts.get(len(buf))
         if layout is None:
             return None
-        parents, children, unpack, _ = layout
+        parents, children, unpack, size = layout
         if unpack is None:
             return None
         values = unpack(buf, 4)
@@ -295,7 +303,7 @@ class _TfShapes:
             or any(values[8::_TF_STRIDE])
         ):
             return None
-        return values
+        return values, 4 + size
 
     def learn(self, size: int, parents: tuple[int, ...], children: tuple[int, ...]) -> None:
         """Record the layout of a message of ``size`` bytes just decoded the slow way."""
@@ -305,11 +313,16 @@ class _TfShapes:
         layout = self.layouts.get(size)
         if layout is not None and layout[0] == parents and layout[1] == children:
             if layout[2] is None:
+                if self.compiled + len(parents) > _TF_LAYOUT_BUDGET:
+                    self.layouts.clear()
+                    self.compiled = 0
                 compiled = Struct(_tf_layout_format(self.endian, parents, children))
                 self.layouts[size] = (parents, children, compiled.unpack_from, compiled.size)
+                self.compiled += len(parents)
             return
         if len(self.layouts) >= _MAX_TF_LAYOUTS:
             self.layouts.clear()
+            self.compiled = 0
         self.layouts[size] = (parents, children, None, 0)
 
 
@@ -374,9 +387,9 @@ def _tf_decoder(generated: _codegen.Decoder, shapes: _TfShapes) -> _codegen.Deco
     read, learn = shapes.read, shapes.learn
 
     def decode(buf: bytes, pos: int) -> tuple[Any, int]:
-        values = read(buf)
-        if values is not None:
-            return build(values), 4 + shapes.layouts[len(buf)][3]
+        known = read(buf)
+        if known is not None:
+            return build(known[0]), known[1]
         message, end = generated(buf, pos)
         transforms = message.transforms
         if len(transforms) < _MIN_TF_LAYOUT_TRANSFORMS:
@@ -408,10 +421,12 @@ def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
     The fields of every transform go into one argument list and one ``pack`` writes the
     message, through a struct looked up by all the string lengths. A layout is compiled the
     second time its lengths are seen (the generated encoder writes the first); at most
-    ``_MAX_TF_LAYOUTS`` are kept. Whatever fails here fails in the generated encoder too, which
-    :func:`serialize` then asks the reference codec to explain.
+    ``_MAX_TF_LAYOUTS`` layouts covering ``_TF_LAYOUT_BUDGET`` transforms are kept. Whatever
+    fails here fails in the generated encoder too, which :func:`serialize` then asks the
+    reference codec to explain.
     """
     packs: dict[tuple[int, ...], Callable[..., bytes]] = {}
+    compiled = 0  # transforms covered by ``packs``
     seen: set[tuple[int, ...]] = set()
     # Frame name -> (CDR length, UTF-8 bytes): the same few names come again and again.
     names: dict[str, tuple[int, bytes]] = {}
@@ -426,6 +441,7 @@ def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
         return entry
 
     def encode(message: Any) -> bytes:
+        nonlocal compiled
         transforms = message.transforms
         count = len(transforms)
         if not _MIN_TF_LAYOUT_TRANSFORMS <= count <= _MAX_TF_LAYOUT_TRANSFORMS:
@@ -458,11 +474,13 @@ def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
                     seen.clear()
                 seen.add(key)
                 return generated(message)
-            if len(packs) >= _MAX_TF_LAYOUTS:
+            if len(packs) >= _MAX_TF_LAYOUTS or compiled + count > _TF_LAYOUT_BUDGET:
                 packs.clear()
+                compiled = 0
             pack = packs[key] = Struct(
                 _tf_layout_format('<', key[:count], key[count:], encode=True)
             ).pack
+            compiled += count
         return pack(*fields)
 
     return encode
@@ -496,9 +514,9 @@ def decode_tf_message_transforms(data: bytes | bytearray | memoryview) -> list[T
     check_header(_TF_MESSAGE, buf)
     shapes = _TF_SHAPES[buf[1]]
     try:
-        values = shapes.read(buf)
-        if values is not None:
-            return _tf_tuples(values)
+        known = shapes.read(buf)
+        if known is not None:
+            return _tf_tuples(known[0])
         transforms = _tf_transforms(buf)
         if len(transforms) < _MIN_TF_LAYOUT_TRANSFORMS:
             return transforms
