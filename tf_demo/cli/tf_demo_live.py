@@ -20,7 +20,11 @@ as child processes on the same DDS domain and shows their output, each line pref
 child's name; listens to TF itself and prints the live transform target <- source (default
 odom <- camera_link); stops everything cleanly after ``--duration`` seconds or on Ctrl-C.
 
-    tf_demo_live [--duration S] [--rate HZ] [--target odom] [--source camera_link] [--quiet]
+With ``--robot`` the children are the REP-105 mobile robot instead: ``robot_state_publisher`` on
+``urdf/mobile_robot.urdf.xacro``, ``joint_state_publisher`` (model from ``robot_description``),
+``dynamic_tf_pub`` moving odom -> base_footprint, and ``tf_echo odom lidar_link``.
+
+    tf_demo_live [--robot] [--duration S] [--rate HZ] [--target odom] [--source F] [--quiet]
 """
 
 from __future__ import annotations
@@ -30,6 +34,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 import math
 import os
+from pathlib import Path
 import signal
 import subprocess
 import sys
@@ -42,6 +47,9 @@ from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import transform_stamped_args
 
 DEMO_NODES = ('static_tf_pub', 'dynamic_tf_pub', 'tf_listener')
+ROBOT_XACRO = 'mobile_robot.urdf.xacro'
+DEFAULT_SOURCE = 'camera_link'
+ROBOT_DEFAULT_SOURCE = 'lidar_link'
 ECHO_TOOL = 'tf_echo'
 CHILD_STOP_TIMEOUT_S = 5.0
 SPIN_SLICE_S = 0.1
@@ -57,12 +65,24 @@ def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
     parser.add_argument('--duration', type=_non_negative, default=None, help='seconds, then stop')
     parser.add_argument('--rate', type=_positive, default=2.0, help='print rate in Hz (2)')
     parser.add_argument('--target', default='odom', help='target frame (odom)')
-    parser.add_argument('--source', default='camera_link', help='source frame (camera_link)')
+    parser.add_argument(
+        '--source',
+        default=None,
+        help=f'source frame ({DEFAULT_SOURCE}; {ROBOT_DEFAULT_SOURCE} with --robot)',
+    )
+    parser.add_argument(
+        '--robot',
+        action='store_true',
+        help='run the REP-105 mobile robot (robot_state_publisher, joint_state_publisher)',
+    )
     parser.add_argument(
         '--quiet', action='store_true', help="hide the child processes' own output"
     )
     parser.add_argument('--no-echo', action='store_true', help='do not start tf_echo')
-    return parser.parse_args(list(argv))
+    options = parser.parse_args(list(argv))
+    if options.source is None:
+        options.source = ROBOT_DEFAULT_SOURCE if options.robot else DEFAULT_SOURCE
+    return options
 
 
 def _positive(text: str) -> float:
@@ -150,11 +170,33 @@ def start_child(name: str, command: list[str], quiet: bool) -> Child:
     return Child(name, process, relay)
 
 
+def robot_xacro_path() -> Path:
+    """Return ``mobile_robot.urdf.xacro``: the source tree's, else the installed share's."""
+    source = Path(__file__).resolve().parents[2] / 'urdf' / ROBOT_XACRO
+    if source.is_file():
+        return source
+    from tf_demo.urdf.loading import find_package_share
+
+    return find_package_share('tf_demo') / 'urdf' / ROBOT_XACRO
+
+
+def demo_nodes(robot: bool) -> list[tuple[str, list[str]]]:
+    """Return the node executables to start and their arguments (course demo or ``--robot``)."""
+    if not robot:
+        return [(name, []) for name in DEMO_NODES]
+    odometry = ['--ros-args', '-p', 'parent_frame:=odom', '-p', 'child_frame:=base_footprint']
+    return [
+        ('robot_state_publisher', ['--ros-args', '-p', f'urdf_file:={robot_xacro_path()}']),
+        ('joint_state_publisher', []),
+        ('dynamic_tf_pub', odometry),
+    ]
+
+
 def start_children(options: argparse.Namespace) -> list[Child]:
     """Start the demo nodes and tf_echo (same environment, so the same ROS_DOMAIN_ID)."""
     children = [
-        start_child(name, child_command(f'tf_demo.nodes.{name}'), options.quiet)
-        for name in DEMO_NODES
+        start_child(name, child_command(f'tf_demo.nodes.{name}', *args), options.quiet)
+        for name, args in demo_nodes(options.robot)
     ]
     if not options.no_echo:
         command = child_command(f'tf_demo.cli.{ECHO_TOOL}', options.target, options.source)
@@ -239,7 +281,7 @@ def run(options: argparse.Namespace, ros_args: list[str]) -> int:
 
 
 def main(args: list[str] | None = None) -> int:
-    """Entry point: ``tf_demo_live [--duration S] [--rate HZ] [--target F] [--source F]``."""
+    """Entry point: ``tf_demo_live [--robot] [--duration S] [--rate HZ] [--target/--source F]``."""
     from tf_demo.cli._args import split_ros_args
 
     argv = list(sys.argv[1:] if args is None else args)
