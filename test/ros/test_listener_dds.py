@@ -169,20 +169,27 @@ def test_wait_started_before_the_publisher_process_resolves(spawn: Any, ros: Non
         listener.unregister()
 
 
-def test_timeout_on_sim_time_over_dds(ros: None) -> None:
-    """With use_sim_time the wait ends when /clock passes the timeout, not on wall time."""
+def sim_time_world(user_name: str, clock_name: str) -> tuple[Any, Any, Callable[[float], None]]:
+    """Return a use_sim_time node, a /clock publishing node and ``publish_clock(seconds)``."""
     sim_node = transport.create_node(
-        'sim_user', parameter_overrides=[Parameter('use_sim_time', value=True)]
+        user_name, parameter_overrides=[Parameter('use_sim_time', value=True)]
     )
-    clock_node = transport.create_node('clock_pub')
+    clock_node = transport.create_node(clock_name)
     clock_pub = clock_node.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
-    spinner = Spinner(sim_node)
-    buffer = Buffer(node=sim_node)
 
     def publish_clock(seconds: float) -> None:
         msg = rosgraph_msgs.Clock()
         msg.clock.sec, msg.clock.nanosec = int(seconds), round(seconds % 1 * 1e9)
         clock_pub.publish(msg)
+
+    return sim_node, clock_node, publish_clock
+
+
+def test_timeout_on_sim_time_over_dds(ros: None) -> None:
+    """With use_sim_time the wait ends when /clock passes the timeout, not on wall time."""
+    sim_node, clock_node, publish_clock = sim_time_world('sim_user', 'clock_pub')
+    spinner = Spinner(sim_node)
+    buffer = Buffer(node=sim_node)
 
     try:
         assert wait_for(lambda: clock_node.count_subscribers('/clock') >= 1)
@@ -234,18 +241,12 @@ def test_message_callbacks_skip_garbage_and_malformed_bytes(ros: None) -> None:
 
 def test_clock_jumping_back_over_dds_clears_the_buffer(ros: None) -> None:
     """A bag loop: /clock going back 10 s clears dynamic transforms, static ones stay."""
-    sim_node = transport.create_node(
-        'bag_user', parameter_overrides=[Parameter('use_sim_time', value=True)]
-    )
-    clock_node = transport.create_node('bag_clock')
-    clock_pub = clock_node.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
+    sim_node, clock_node, publish_clock = sim_time_world('bag_user', 'bag_clock')
     spinner = Spinner(sim_node)
     buffer = Buffer(node=sim_node)
 
     def clock_at(seconds: int) -> bool:
-        msg = rosgraph_msgs.Clock()
-        msg.clock.sec = seconds
-        clock_pub.publish(msg)
+        publish_clock(seconds)
         return bool(sim_node.get_clock().now().nanoseconds == seconds * S)
 
     try:
