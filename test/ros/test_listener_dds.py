@@ -241,7 +241,7 @@ def test_message_callbacks_skip_garbage_and_malformed_bytes(ros: None) -> None:
 
 def test_clock_jumping_back_over_dds_clears_the_buffer(ros: None) -> None:
     """A bag loop: /clock going back 10 s clears dynamic transforms, static ones stay."""
-    sim_node, clock_node, publish_clock = sim_time_world('bag_user', 'bag_clock')
+    sim_node, _clock_node, publish_clock = sim_time_world('bag_user', 'bag_clock')
     spinner = Spinner(sim_node)
     buffer = Buffer(node=sim_node)
 
