@@ -19,6 +19,11 @@ CDR (XCDR1) serialisation byte-identical to ROS 2 Jazzy's rmw, with a fast tf pa
 :func:`deserialize` reads CDR_LE and CDR_BE. Both run straight-line code generated once per
 type (see :mod:`tf_demo.msgs._codegen`). Any malformed input raises :class:`CdrError`, whose
 message names the type, the field and the byte offset.
+
+TFMessages, the hot path, also have whole-message layouts: once the same frame-name lengths come
+twice, one precompiled struct reads or writes the whole message in one call (see
+:class:`_TfShapes` and :func:`_tf_encoder`); :func:`decode_tf_message_transforms` skips the
+message objects altogether.
 """
 
 from __future__ import annotations
