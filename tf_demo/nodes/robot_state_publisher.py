@@ -152,7 +152,6 @@ def positions_from_joint_state(
 
 _HEADER = b'\x00\x01\x00\x00'
 _U32 = Struct('<I')
-_STAMP = Struct('<iI')
 
 
 def _cdr_string(text: str) -> bytes:

@@ -48,9 +48,6 @@ Quat = tuple[float, float, float, float]
 JointTransform = tuple[str, str, Vec3, Quat]
 """``(parent_link, child_link, translation, rotation_xyzw)``: the pose of child in parent."""
 
-_REVOLUTE = 0
-_PRISMATIC = 1
-
 
 def kdl_quaternion(x: float, y: float, z: float, w: float) -> Quat:
     """
