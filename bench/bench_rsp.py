@@ -45,20 +45,10 @@ from tf_demo.nodes.robot_state_publisher import positions_from_joint_state  # no
 from tf_demo.nodes.robot_state_publisher import publish_interval_ns  # noqa: E402
 from tf_demo.nodes.robot_state_publisher import TfMessageEncoder  # noqa: E402
 from tf_demo.testing.urdf_strategies import pinocchio_link_poses  # noqa: E402
+from tf_demo.testing.urdf_strategies import random_positions  # noqa: E402
 from tf_demo.urdf import RobotModel  # noqa: E402
 
 SECOND = 1_000_000_000
-
-
-def random_positions(model: RobotModel, rng: random.Random) -> dict[str, float]:
-    positions = {}
-    for name in model.movable_joints:
-        joint = model.joint(name)
-        if joint.type == 'continuous' or joint.limit is None:
-            positions[name] = rng.uniform(-math.pi, math.pi)
-        else:
-            positions[name] = rng.uniform(joint.limit.lower, joint.limit.upper)
-    return positions
 
 
 def best_of(repeats: int, loops: int, action) -> float:

@@ -30,6 +30,7 @@ from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.core.math3d import quat_multiply
 from tf_demo.testing.urdf_strategies import GeneratedRobot
 from tf_demo.testing.urdf_strategies import pinocchio_link_poses
+from tf_demo.testing.urdf_strategies import random_positions
 from tf_demo.testing.urdf_strategies import robots
 from tf_demo.urdf import kdl_quaternion
 from tf_demo.urdf import RobotModel
@@ -51,17 +52,6 @@ def assert_poses_match_pinocchio(model: RobotModel, positions: dict[str, float])
             for a, b in zip(row, pin_row, strict=True):
                 assert a == pytest.approx(b, abs=1e-9), link
     return len(ours)
-
-
-def random_positions(model: RobotModel, rng: random.Random) -> dict[str, float]:
-    positions = {}
-    for name in model.movable_joints:
-        joint = model.joint(name)
-        if joint.type == 'continuous' or joint.limit is None:
-            positions[name] = rng.uniform(-math.pi, math.pi)
-        else:
-            positions[name] = rng.uniform(joint.limit.lower, joint.limit.upper)
-    return positions
 
 
 @pytest.mark.differential

@@ -35,10 +35,11 @@ from hypothesis import strategies as st
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
+    import random
 
     from tf_demo.urdf import RobotModel
 
-__all__ = ['GeneratedRobot', 'pinocchio_link_poses', 'robots']
+__all__ = ['GeneratedRobot', 'pinocchio_link_poses', 'random_positions', 'robots']
 
 JOINT_TYPES = ('fixed', 'revolute', 'continuous', 'prismatic', 'planar', 'floating')
 _MOVABLE = ('revolute', 'continuous', 'prismatic')
@@ -179,3 +180,15 @@ def pinocchio_link_poses(
             tuple(tuple(float(v) for v in row) for row in placement.rotation),
         )
     return poses
+
+
+def random_positions(model: RobotModel, rng: random.Random) -> dict[str, float]:
+    """Draw a position for every movable joint: within its limits, or in [-pi, pi] without."""
+    positions = {}
+    for name in model.movable_joints:
+        joint = model.joint(name)
+        if joint.type == 'continuous' or joint.limit is None:
+            positions[name] = rng.uniform(-math.pi, math.pi)
+        else:
+            positions[name] = rng.uniform(joint.limit.lower, joint.limit.upper)
+    return positions
