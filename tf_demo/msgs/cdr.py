@@ -386,12 +386,15 @@ def _tf_decoder(generated: _codegen.Decoder, shapes: _TfShapes) -> _codegen.Deco
     """
     Wrap the generated TFMessage decoder of one byte order with the whole-message layouts.
 
-    The wrapper is only called by :func:`deserialize`, with the message at ``pos`` 4.
+    Layouts are of whole buffers (header included), as :func:`deserialize` passes them: a
+    message at another position than 4 goes to the generated decoder.
     """
     build = _tf_message_builder()
     read, learn = shapes.read, shapes.learn
 
     def decode(buf: bytes, pos: int) -> tuple[Any, int]:
+        if pos != 4:
+            return generated(buf, pos)
         known = read(buf)
         if known is not None:
             return build(known[0]), known[1]
