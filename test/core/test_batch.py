@@ -93,3 +93,25 @@ def test_batch_of_interior_stamps_with_reparenting():
         single = core.lookup_transform('world', 'c', stamp)
         assert translations[row] == pytest.approx(single.translation, abs=1e-12)
         assert rotations[row] == pytest.approx(single.rotation, abs=1e-12)
+
+
+@pytest.mark.parametrize('step', [0.0, 0.05, 0.9, 2.5])
+def test_batch_along_a_smooth_chain_equals_single_lookups(step):
+    """Stamps inside every history (one pass per link): equal to single lookups, any angle."""
+    core = BufferCore(20 * S, log=lambda level, text: None)
+    core.set_transform('c', 'd', 0, (0.1, 0.2, 0.3), math3d.quat_from_rpy(0.3, 0.2, 0.1), '', True)
+    core.set_transform('d', 'e', 0, (0.0, 0.0, 0.5), math3d.quat_from_rpy(0.0, 1.2, 0.0), '', True)
+    for k in range(60):
+        for index, (parent, child) in enumerate((('w', 'a'), ('a', 'b'), ('b', 'c'))):
+            angle = step * k + 0.1 * index
+            q = math3d.quat_from_rpy(0.5 * angle, -0.25 * angle, angle)
+            t = (0.3 * k + index, 0.1 * k, -0.05 * k)
+            core.set_transform(parent, child, 10 * S + k * S // 10 + 7 * index, t, q)
+    rng = random.Random(int(step * 100))
+    times = np.array([10 * S + 1_000 + rng.randint(0, 58 * S // 10) for _ in range(4200)])
+    for target, source in (('w', 'e'), ('e', 'w'), ('a', 'd')):
+        translations, rotations = core.lookup_transforms(target, source, times)
+        for row, stamp in enumerate(times.tolist()):
+            single = core.lookup_transform(target, source, stamp)
+            assert translations[row] == pytest.approx(single.translation, abs=1e-9)
+            assert rotations[row] == pytest.approx(single.rotation, abs=1e-9)

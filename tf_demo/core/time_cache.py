@@ -58,6 +58,7 @@ __all__ = [
     'ERROR_NO_DATA_FOR_EXTRAPOLATION',
     'INTERVAL_COLUMNS',
     'CacheArrays',
+    'CacheView',
     'Sample',
     'StaticCache',
     'TimeCache',
@@ -77,6 +78,8 @@ ERROR_FORWARD_EXTRAPOLATION = 8
 ERROR_NO_DATA_FOR_EXTRAPOLATION = 9
 
 Sample = tuple[float, float, float, float, float, float, float, int]
+#: :meth:`TimeCache.view`: earliest, latest, scale, start, last, stamps, samples.
+CacheView = tuple[int, int, float, int, int, 'array[int]', list[Sample]]
 
 _NS_PER_S = 1_000_000_000
 _acos = math.acos
@@ -94,10 +97,11 @@ class TransformStorage(NamedTuple):
 
 
 #: Rows of :attr:`CacheArrays.intervals`, one column per interval between samples k and k + 1:
-#: older translation (3), newer translation (3), older rotation (4), newer rotation with the
-#: slerp sign applied (4), slerp angle, ``1 / sin(angle)`` (0 for a zero angle), and the
-#: interval length in ns as a float.
-INTERVAL_COLUMNS = 17
+#: older translation (3), newer minus older translation (3), older rotation (4), newer rotation
+#: with the slerp sign applied (4), slerp angle, ``1 / sin(angle)`` (0 for a zero angle), the
+#: interval length in ns as a float, ``cos(angle) / sin(angle)`` (0 for a zero angle), and
+#: ``newer / sin(angle) - older * cot(angle)`` (4; the sine coefficient of the slerp).
+INTERVAL_COLUMNS = 22
 
 
 class CacheArrays(NamedTuple):
@@ -116,6 +120,8 @@ class CacheArrays(NamedTuple):
     any_still: bool
     #: Some interval changes parent (no interpolation across it).
     any_parent_change: bool
+    #: Largest slerp angle of any interval (0 when there is none).
+    max_theta: float
 
 
 def duration_to_sec(duration_ns: int) -> float:
@@ -161,6 +167,7 @@ class TimeCache:
         '_stamps',
         '_start',
         '_version',
+        '_view',
         'child_id',
         'latest',
     )
@@ -172,6 +179,7 @@ class TimeCache:
         self._samples: list[Sample] = []
         self._start = 0
         self._version = 0
+        self._view: CacheView | None = None
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
         self.latest: tuple[int, int] = (0, 0)
         self._arrays: CacheArrays | None = None
@@ -188,6 +196,7 @@ class TimeCache:
         :returns: False when the stamp is too old (tf2's TF_OLD_DATA case); True otherwise,
             including for a silently dropped exact duplicate.
         """
+        self._view = None
         stamps = self._stamps
         start = self._start
         end = len(stamps)
@@ -230,9 +239,34 @@ class TimeCache:
         self._samples = []
         self._start = 0
         self._version += 1
+        self._view = None
         self.latest = (0, 0)
 
     # --- queries -------------------------------------------------------------------------
+
+    def view(self) -> CacheView:
+        """
+        Return (and keep until the next insert or clear) the walk's snapshot of this cache.
+
+        ``(earliest, latest, scale, start, last, stamps, samples)``: the oldest and newest
+        stamps (``1, 0`` when empty, so that no time is inside), ``(last - start) / (latest -
+        earliest)`` for a first guess of the interval, and the live index range
+        ``[start, last]`` of the stamp array and sample list.
+        """
+        view = self._view
+        if view is None:
+            stamps = self._stamps
+            start = self._start
+            last = len(stamps) - 1
+            if start > last:
+                view = (1, 0, 0.0, start, last, stamps, self._samples)
+            else:
+                earliest = stamps[start]
+                latest = stamps[last]
+                scale = (last - start) / (latest - earliest) if latest != earliest else 0.0
+                view = (earliest, latest, scale, start, last, stamps, self._samples)
+            self._view = view
+        return view
 
     def get_data(self, time_ns: int) -> Sample | None:
         """
@@ -401,13 +435,15 @@ class TimeCache:
         dot = np.einsum('ij,ij->j', q0, q1)
         theta = np.arccos(np.minimum(np.abs(dot), 1.0))
         intervals[0:3] = values[:3, :-1]
-        intervals[3:6] = values[:3, 1:]
+        intervals[3:6] = values[:3, 1:] - values[:3, :-1]
         intervals[6:10] = q0
         intervals[10:14] = q1 * np.where(dot < 0, -1.0, 1.0)
         intervals[14] = theta
         with np.errstate(divide='ignore'):
             intervals[15] = np.where(theta != 0.0, 1.0 / np.sin(theta), 0.0)
         intervals[16] = np.diff(stamps).astype(np.float64)
+        intervals[17] = np.cos(theta) * intervals[15]
+        intervals[18:22] = intervals[10:14] * intervals[15] - q0 * intervals[17]
         arrays = CacheArrays(
             self._version,
             stamps,
@@ -416,6 +452,7 @@ class TimeCache:
             intervals,
             bool((theta == 0.0).any()),
             bool((parents[1:] != parents[:-1]).any()),
+            float(theta.max()) if theta.size else 0.0,
         )
         self._arrays = arrays
         return arrays
