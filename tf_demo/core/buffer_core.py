@@ -174,13 +174,13 @@ def _accumulate_side(
     The walk stops at ``stop``, at a frame without cache or data, at ``other`` (once its data
     was read) or after ``MAX_GRAPH_DEPTH`` steps.
 
-    :returns: ``(outcome, frame, last, depth, x, y, z, qx, qy, qz, qw)``: the outcome
+    :returns: ``(outcome, frame, last_frame, depth, x, y, z, qx, qy, qz, qw)``: the outcome
         (``_SIDE_*``), the frame where the walk stopped, the last frame whose link was
         accumulated (the start frame when none), the number of links accumulated and the
         accumulated transform (identity when none).
     """
     depth = 0
-    last = frame
+    last_frame = frame
     x = y = z = qx = qy = qz = 0.0
     qw = 1.0
     acos = _acos
@@ -188,75 +188,72 @@ def _accumulate_side(
     while frame != stop:
         cache = caches[frame]
         if cache is None:
-            return _SIDE_NO_CACHE, frame, last, depth, x, y, z, qx, qy, qz, qw
+            return _SIDE_NO_CACHE, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
         if cache.is_static:
             lx, ly, lz, px, py, pz, pw, parent = cache._sample  # type: ignore[union-attr]
         else:
-            stamps = cache._stamps  # type: ignore[union-attr]
-            end = len(stamps)
-            start = cache._start  # type: ignore[union-attr]
-            if start == end:
-                return _SIDE_NO_DATA, frame, last, depth, x, y, z, qx, qy, qz, qw
-            samples = cache._samples  # type: ignore[union-attr]
-            if time_ns == 0:
-                lx, ly, lz, px, py, pz, pw, parent = samples[end - 1]
-            else:
-                latest = stamps[end - 1]
-                earliest = stamps[start]
-                if time_ns >= latest:
-                    if time_ns != latest:
-                        return _SIDE_NO_DATA, frame, last, depth, x, y, z, qx, qy, qz, qw
-                    lx, ly, lz, px, py, pz, pw, parent = samples[end - 1]
-                elif time_ns <= earliest:
-                    if time_ns != earliest:
-                        return _SIDE_NO_DATA, frame, last, depth, x, y, z, qx, qy, qz, qw
+            view = cache._view  # type: ignore[union-attr]
+            if view is None:
+                view = cache.view()  # type: ignore[union-attr]
+            earliest, latest, scale, start, last, stamps, samples = view
+            if not (earliest < time_ns < latest and time_ns):
+                # At an end of the history, time 0 (the newest sample), or no data.
+                if start > last:
+                    return _SIDE_NO_DATA, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
+                if time_ns in (0, latest):
+                    lx, ly, lz, px, py, pz, pw, parent = samples[last]
+                elif time_ns == earliest:
                     lx, ly, lz, px, py, pz, pw, parent = samples[start]
                 else:
-                    # Interior: a linear guess (exact for evenly spaced streams), else bisect.
-                    index = start + (time_ns - earliest) * (end - 1 - start) // (latest - earliest)
-                    one_stamp = stamps[index]
-                    if one_stamp <= time_ns:
-                        two_stamp = stamps[index + 1]
-                        if two_stamp <= time_ns:
-                            index = _bisect_right(stamps, time_ns, index + 2, end) - 1
-                            one_stamp = stamps[index]
-                            two_stamp = stamps[index + 1]
-                    else:
-                        index = _bisect_right(stamps, time_ns, start, index) - 1
+                    return _SIDE_NO_DATA, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
+            else:
+                # Interior: a linear guess (exact for evenly spaced streams), else bisect.
+                index = start + int((time_ns - earliest) * scale)
+                if index >= last:
+                    index = last - 1
+                one_stamp = stamps[index]
+                if one_stamp <= time_ns:
+                    two_stamp = stamps[index + 1]
+                    if two_stamp <= time_ns:
+                        index = _bisect_right(stamps, time_ns, index + 2, last + 1) - 1
                         one_stamp = stamps[index]
                         two_stamp = stamps[index + 1]
-                    lx, ly, lz, px, py, pz, pw, parent = samples[index]
-                    tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1]
-                    if parent1 == parent:
-                        # tf2's interpolate: lerp the translation, slerp the rotation.
-                        ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)
-                        keep = 1.0 - ratio
-                        lx = keep * lx + ratio * tx1
-                        ly = keep * ly + ratio * ty1
-                        lz = keep * lz + ratio * tz1
-                        dot = px * x1 + py * y1 + pz * z1 + pw * w1
-                        if dot < 0:
-                            theta = acos(-dot if -dot < 1.0 else 1.0)
-                            if theta != 0.0:
-                                d = 1.0 / sin(theta)
-                                s0 = sin(keep * theta) * d
-                                s1 = -sin(ratio * theta) * d
-                                px = px * s0 + x1 * s1
-                                py = py * s0 + y1 * s1
-                                pz = pz * s0 + z1 * s1
-                                pw = pw * s0 + w1 * s1
-                        else:
-                            theta = acos(dot if dot < 1.0 else 1.0)
-                            if theta != 0.0:
-                                d = 1.0 / sin(theta)
-                                s0 = sin(keep * theta) * d
-                                s1 = sin(ratio * theta) * d
-                                px = px * s0 + x1 * s1
-                                py = py * s0 + y1 * s1
-                                pz = pz * s0 + z1 * s1
-                                pw = pw * s0 + w1 * s1
+                else:
+                    index = _bisect_right(stamps, time_ns, start, index) - 1
+                    one_stamp = stamps[index]
+                    two_stamp = stamps[index + 1]
+                lx, ly, lz, px, py, pz, pw, parent = samples[index]
+                tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1]
+                if parent1 == parent:
+                    # tf2's interpolate: lerp the translation, slerp the rotation.
+                    ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)
+                    keep = 1.0 - ratio
+                    lx = keep * lx + ratio * tx1
+                    ly = keep * ly + ratio * ty1
+                    lz = keep * lz + ratio * tz1
+                    dot = px * x1 + py * y1 + pz * z1 + pw * w1
+                    if dot < 0:
+                        theta = acos(-dot if -dot < 1.0 else 1.0)
+                        if theta != 0.0:
+                            d = 1.0 / sin(theta)
+                            s0 = sin(keep * theta) * d
+                            s1 = -sin(ratio * theta) * d
+                            px = px * s0 + x1 * s1
+                            py = py * s0 + y1 * s1
+                            pz = pz * s0 + z1 * s1
+                            pw = pw * s0 + w1 * s1
+                    else:
+                        theta = acos(dot if dot < 1.0 else 1.0)
+                        if theta != 0.0:
+                            d = 1.0 / sin(theta)
+                            s0 = sin(keep * theta) * d
+                            s1 = sin(ratio * theta) * d
+                            px = px * s0 + x1 * s1
+                            py = py * s0 + y1 * s1
+                            pz = pz * s0 + z1 * s1
+                            pw = pw * s0 + w1 * s1
         if frame == other:
-            return _SIDE_REACHED_OTHER, frame, last, depth, x, y, z, qx, qy, qz, qw
+            return _SIDE_REACHED_OTHER, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
         if depth:
             # link * acc.  p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations
             # than tf2's q * v * conj(q), equal to about 1e-16.
@@ -276,12 +273,12 @@ def _accumulate_side(
             )
         else:
             x, y, z, qx, qy, qz, qw = lx, ly, lz, px, py, pz, pw
-        last = frame
+        last_frame = frame
         frame = parent
         depth += 1
         if depth > MAX_GRAPH_DEPTH:
-            return _SIDE_LOOP, frame, last, depth, x, y, z, qx, qy, qz, qw
-    return _SIDE_REACHED_STOP, frame, last, depth, x, y, z, qx, qy, qz, qw
+            return _SIDE_LOOP, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
+    return _SIDE_REACHED_STOP, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
 
 
 def _time_from_sec(seconds: float) -> int:
