@@ -188,6 +188,8 @@ class Buffer(BufferCore):
         super().__init__(cache_time_ns, log=self._log_core)
         self._node = node
         self._condition = threading.Condition()
+        self._blocked_waits = 0
+        """Threads inside :meth:`_wait_until`'s condition wait (changed under ``_condition``)."""
         self._async_waits: list[_AsyncWait] = []
         self._watcher: threading.Thread | None = None
         self._dedicated_thread = False
@@ -257,8 +259,11 @@ class Buffer(BufferCore):
             self._condition.notify_all()
 
     def _on_new_data(self) -> None:
-        """Core insert callback: wake blocking waits and resolve asynchronous ones."""
-        self._wake()
+        """Core insert callback: wake blocking waits (if any) and resolve asynchronous ones."""
+        # A waiter registers under the lock before it checks its condition, so one that
+        # registers after this read sees the inserted data itself: no wake-up is lost.
+        if self._blocked_waits:
+            self._wake()
         if self._async_waits:
             self._service_async_waits(now_ns=None)
 
@@ -296,11 +301,15 @@ class Buffer(BufferCore):
             return
         deadline_ns = self._now_ns() + timeout_ns
         with self._condition:
-            while not ready():
-                remaining_ns = deadline_ns - self._now_ns()
-                if remaining_ns <= 0:
-                    return
-                self._condition.wait(min(remaining_ns / 1e9, MAX_WAIT_SLICE_S))
+            self._blocked_waits += 1
+            try:
+                while not ready():
+                    remaining_ns = deadline_ns - self._now_ns()
+                    if remaining_ns <= 0:
+                        return
+                    self._condition.wait(min(remaining_ns / 1e9, MAX_WAIT_SLICE_S))
+            finally:
+                self._blocked_waits -= 1
 
     # ---------------------------------------------------------------------- message in/out
 
