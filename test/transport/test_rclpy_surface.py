@@ -1206,9 +1206,6 @@ def _severity_varies(call: ast.Call) -> bool:
     return False
 
 
-@pytest.mark.xfail(
-    strict=True, reason='robot_state_publisher.py:423, filed to reviewer by rclpy-audit 09:58'
-)
 def test_no_call_site_logs_at_two_severities() -> None:
     """rclpy raises 'Logger severity cannot be changed between calls.' for such a call site."""
     # rclpy/rclpy/impl/rcutils_logger.py: contexts keyed by CallerId(function, file, line,
