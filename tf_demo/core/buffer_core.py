@@ -88,6 +88,7 @@ NO_PARENT = 'NO_PARENT'
 _LOGGER = logging.getLogger('tf_demo.core')
 _canonical_quat = math3d.canonical_quat
 _bisect_right = bisect_right
+_new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 #: Lanes per pass of :meth:`BufferCore.lookup_transforms`.
 _BATCH_CHUNK = 4096
 _acos = math.acos
@@ -644,6 +645,9 @@ class BufferCore:
         top = last if outcome == _SIDE_REACHED_STOP else frame
         failed_cache = caches[frame] if outcome == _SIDE_NO_DATA else None
 
+        if target_id == top:
+            # The target is the top itself: the inverse of an identity changes nothing.
+            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
         # Target side: accumulate top_T_target.
         outcome, frame, _, depth, tx, ty, tz, tqx, tqy, tqz, tqw = _accumulate_side(
             caches, target_id, top, source_id, time_ns
@@ -765,10 +769,9 @@ class BufferCore:
         with self._lock:
             translation, q, stamp = self._lookup_locked(target, source, time_ns)
         # ROS 2 stores the result in a tf2::Transform (a matrix) and reads the quaternion back.
-        if q is _IDENTITY_Q:
-            return TransformResult(translation, q, stamp)
-        rotation = _canonical_quat(q)
-        return TransformResult(translation, rotation, stamp)
+        if q is not _IDENTITY_Q:
+            q = _canonical_quat(q)
+        return _new_tuple(TransformResult, (translation, q, stamp))  # TransformResult(...)
 
     def lookup_transform_full(
         self,
