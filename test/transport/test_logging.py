@@ -19,6 +19,7 @@ from pathlib import Path
 import re
 import subprocess
 import sys
+from typing import Any
 
 import pytest
 from tf_demo.transport.logging import format_log_line
@@ -78,7 +79,8 @@ def test_options_once_skip_first_and_throttle(capfd: pytest.CaptureFixture[str])
         printed.append(logger.info(f'skip {index}', skip_first=True))
         printed.append(logger.info(f'throttle {index}', throttle_duration_sec=3600.0))
     assert printed == [True, False, True, False, True, False, False, True, False]
-    messages = [LINE.match(line).group(5) for line in capfd.readouterr().err.splitlines()]
+    matches = [LINE.match(line) for line in capfd.readouterr().err.splitlines()]
+    messages = [match.group(5) if match else None for match in matches]
     assert messages == ['once 0', 'throttle 0', 'skip 1', 'skip 2']
     with pytest.raises(TypeError, match='not one of the recognized logging options'):
         logger.info('x', every_n=3)
@@ -86,6 +88,7 @@ def test_options_once_skip_first_and_throttle(capfd: pytest.CaptureFixture[str])
 
 SCRIPT = """
 import sys
+from typing import Any
 from tf_demo.transport import init
 from tf_demo.transport.logging import get_logger
 init(sys.argv)
@@ -179,4 +182,76 @@ def test_name_option_logs_under_another_logger(capfd: pytest.CaptureFixture[str]
     """The name= keyword logs under that logger name, as rclpy's RcutilsLogger.log does."""
     get_logger('test_logging_a').log('x', LoggingSeverity.WARN, name='test_logging_b')
     [line] = capfd.readouterr().err.splitlines()
-    assert LINE.match(line).group(4) == 'test_logging_b'
+    match = LINE.match(line)
+    assert match is not None
+    assert match.group(4) == 'test_logging_b'
+
+
+def _log_at(logger: Any, severity: LoggingSeverity, text: str, **options: Any) -> bool:
+    """One call site used with whatever severity and options the caller passes."""
+    return bool(logger.log(text, severity, **options))
+
+
+def test_a_call_site_keeps_its_first_severity_as_in_rclpy() -> None:
+    """rclpy keys state by call site: another severity there raises ValueError (its text)."""
+    logger = get_logger('test_logging_call_site_severity')
+    assert _log_at(logger, LoggingSeverity.WARN, 'first')
+    assert _log_at(logger, LoggingSeverity.WARN, 'same severity again')
+    with pytest.raises(ValueError, match=r'^Logger severity cannot be changed between calls\.$'):
+        _log_at(logger, LoggingSeverity.ERROR, 'other severity')
+
+    def report(level: int) -> None:  # the pattern this rule breaks: one expression, two methods
+        (logger.warning if level == 30 else logger.error)('x')
+
+    report(30)
+    with pytest.raises(ValueError, match='severity cannot be changed'):
+        report(40)
+    # a new logger object starts with fresh call-site state, as rclpy.logging.get_logger's do
+    assert _log_at(get_logger('test_logging_call_site_severity'), LoggingSeverity.ERROR, 'ok')
+
+
+def test_two_calls_on_one_line_are_two_call_sites() -> None:
+    """Like rclpy's CallerId (which includes f_lasti), two calls on one line are distinct."""
+    logger = get_logger('test_logging_one_line')
+    assert logger.warning('a') and logger.error('b')  # noqa: PT018 - one line on purpose
+
+
+def test_the_rule_applies_below_the_level_too() -> None:
+    """The call-site context is made before the level check, as in rclpy."""
+    logger = get_logger('test_logging_below_level')
+    logger.set_level(LoggingSeverity.ERROR)
+    assert not _log_at(logger, LoggingSeverity.DEBUG, 'hidden')
+    with pytest.raises(ValueError, match='severity cannot be changed'):
+        _log_at(logger, LoggingSeverity.ERROR, 'shown')
+
+
+def test_name_and_filter_options_are_fixed_per_call_site() -> None:
+    """name=, the set of filters and their parameters cannot change at a call site."""
+    logger = get_logger('test_logging_fixed_options')
+    _log_at(logger, LoggingSeverity.INFO, 'x', name='test_logging_fixed_a')
+    with pytest.raises(ValueError, match=r'^Logger name cannot be changed between calls\.$'):
+        _log_at(logger, LoggingSeverity.INFO, 'x', name='test_logging_fixed_b')
+    other = get_logger('test_logging_fixed_filters')
+    _log_at(other, LoggingSeverity.INFO, 'x', throttle_duration_sec=10.0)
+    with pytest.raises(ValueError, match=r'^Logging filter parameters cannot be changed'):
+        _log_at(other, LoggingSeverity.INFO, 'x', throttle_duration_sec=5.0)
+    with pytest.raises(ValueError, match=r'^Requested logging filters cannot be changed'):
+        _log_at(other, LoggingSeverity.INFO, 'x', throttle_duration_sec=10.0, once=True)
+
+
+def test_incomplete_or_unsupported_filter_options_are_refused_with_rclpys_texts() -> None:
+    """A throttle without its duration is a TypeError; another time source a ValueError."""
+    logger = get_logger('test_logging_filter_texts')
+    with pytest.raises(TypeError, match='required parameter "throttle_duration_sec" not spec'):
+        logger.info('x', throttle_time_source_type='RCUTILS_STEADY_TIME')
+    with pytest.raises(ValueError, match='currently only RCUTILS_STEADY_TIME is supported'):
+        logger.info('x', throttle_duration_sec=1.0, throttle_time_source_type='RCUTILS_ROS_TIME')
+
+
+def test_messages_must_be_strings_when_printed() -> None:
+    """rclpy's C logging call takes str only; a message below the level is never converted."""
+    logger = get_logger('test_logging_message_type')
+    logger.set_level(LoggingSeverity.WARN)
+    assert logger.info(42) is False
+    with pytest.raises(TypeError, match='the message must be a str, got int'):
+        logger.warning(42)

@@ -30,7 +30,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from enum import IntEnum
-import math
 import os
 import sys
 import threading
@@ -150,8 +149,6 @@ class _LoggingState:
         self.lock = threading.Lock()
         self.default_level = LoggingSeverity.INFO
         self.levels: dict[str, LoggingSeverity] = {}
-        # once / skip_first / throttle state per (logger, file, line), as rclpy keys it.
-        self.call_sites: dict[tuple[str, str, int], dict[str, Any]] = {}
 
     def effective_level(self, name: str) -> LoggingSeverity:
         candidate = name
@@ -202,7 +199,8 @@ def get_logger_effective_level(name: str) -> LoggingSeverity:
     return _STATE.effective_level(name)
 
 
-# rclpy's filters, in the order rclpy evaluates them, with their parameters and defaults.
+# rclpy's filters, in the order rclpy evaluates them, with their parameters and defaults
+# (None: required). rclpy/rclpy/impl/rcutils_logger.py: Throttle, SkipFirst, Once.
 _FILTER_PARAMETERS: dict[str, dict[str, Any]] = {
     'throttle': {
         'throttle_duration_sec': None,
@@ -212,10 +210,36 @@ _FILTER_PARAMETERS: dict[str, dict[str, Any]] = {
     'once': {'once': None},
 }
 _ALL_FILTER_PARAMETERS = [name for params in _FILTER_PARAMETERS.values() for name in params]
+_THIS_FILE = os.path.realpath(__file__)
+
+CallerId = tuple[str, str, int, int]
+"""``(function name, file path, line number, last bytecode index)`` of a logging call site."""
 
 
 def _detect_filters(options: dict[str, Any]) -> list[str]:
-    """Return the filters requested by ``options`` (rclpy's ``get_filters_from_kwargs``)."""
+    """
+    Return the filters requested by ``options``, as rclpy's ``get_filters_from_kwargs``.
+
+    :raises TypeError: a detected filter misses a required parameter, or an option is unknown
+        (rclpy's texts, checked in rclpy's order).
+    """
+    options = dict(options)
+    detected = [
+        name
+        for name, params in _FILTER_PARAMETERS.items()
+        if any(options.get(param) for param in params)
+    ]
+    for name in detected:
+        for param, default in _FILTER_PARAMETERS[name].items():
+            if param in options:
+                continue
+            if default is None:
+                msg = (
+                    f'required parameter "{param}" not specified '
+                    f'but is required for the the logging filter "{name}"'
+                )
+                raise TypeError(msg)
+            options[param] = default
     for key in options:
         if key not in _ALL_FILTER_PARAMETERS:
             msg = (
@@ -223,48 +247,103 @@ def _detect_filters(options: dict[str, Any]) -> list[str]:
                 f'"{_ALL_FILTER_PARAMETERS}"'
             )
             raise TypeError(msg)
-    detected = [
-        name
-        for name, params in _FILTER_PARAMETERS.items()
-        if any(options.get(param) for param in params)
-    ]
-    if 'throttle' in detected:
-        source = options.get('throttle_time_source_type', 'RCUTILS_STEADY_TIME')
-        if source != 'RCUTILS_STEADY_TIME':
-            msg = (
-                f'Received throttle_time_source_type of "{source}"; '
-                'currently only RCUTILS_STEADY_TIME is supported'
-            )
-            raise ValueError(msg)
     return detected
 
 
-def _filter_allows(name: str, state: dict[str, Any], options: dict[str, Any]) -> bool:
-    """Apply one filter to the per-call-site ``state`` (updating it as rclpy does)."""
-    if name == 'throttle':
+def _new_context(
+    name: str, severity: LoggingSeverity, filters: list[str], options: dict[str, Any]
+) -> dict[str, Any]:
+    """Return the state of a new call site (rclpy's ``initialize_context`` of each filter)."""
+    context: dict[str, Any] = {'name': name, 'severity': severity, 'filters': filters}
+    for filter_name in filters:
+        for param, default in _FILTER_PARAMETERS[filter_name].items():
+            context[param] = options.get(param, default)
+        if filter_name == 'throttle':
+            context['throttle_last_logged'] = 0.0
+            source = context['throttle_time_source_type']
+            if source != 'RCUTILS_STEADY_TIME':
+                msg = (
+                    f'Received throttle_time_source_type of "{source}"; currently only '
+                    'RCUTILS_STEADY_TIME is supported (simulated with python time.monotonic)'
+                )
+                raise ValueError(msg)
+        elif filter_name == 'skip_first':
+            context['first_has_been_skipped'] = False
+        else:
+            context['has_been_logged_once'] = False
+    return context
+
+
+def _check_unchanged(
+    context: dict[str, Any],
+    name: str,
+    severity: LoggingSeverity,
+    filters: list[str],
+    options: dict[str, Any],
+) -> None:
+    """
+    Refuse what rclpy refuses at a call site seen before.
+
+    :raises ValueError: the severity, ``name=``, the filters or a filter parameter differ from
+        the first call made from this call site (rclpy's texts).
+    """
+    if severity != context['severity']:
+        msg = 'Logger severity cannot be changed between calls.'
+        raise ValueError(msg)
+    if name != context['name']:
+        msg = 'Logger name cannot be changed between calls.'
+        raise ValueError(msg)
+    if filters != context['filters']:
+        msg = 'Requested logging filters cannot be changed between calls.'
+        raise ValueError(msg)
+    for filter_name in filters:
+        params = _FILTER_PARAMETERS[filter_name]
+        if any(context[param] != options.get(param, params[param]) for param in params):
+            msg = 'Logging filter parameters cannot be changed between calls.'
+            raise ValueError(msg)
+
+
+def _should_log(filter_name: str, context: dict[str, Any]) -> bool:
+    """Apply one filter to a call site's state, updating it as rclpy's ``should_log`` does."""
+    if filter_name == 'throttle':
         now = time.monotonic()
-        if now < state.get('throttle_last_logged', -math.inf) + float(
-            options['throttle_duration_sec']
-        ):
+        if now < context['throttle_last_logged'] + float(context['throttle_duration_sec']):
             return False
-        state['throttle_last_logged'] = now
+        context['throttle_last_logged'] = now
         return True
-    if name == 'skip_first':
-        if not state.get('first_has_been_skipped'):
-            state['first_has_been_skipped'] = True
+    if filter_name == 'skip_first':
+        if not context['first_has_been_skipped']:
+            context['first_has_been_skipped'] = True
             return False
         return True
-    if state.get('has_been_logged_once'):
+    if context['has_been_logged_once']:
         return False
-    state['has_been_logged_once'] = True
+    context['has_been_logged_once'] = True
     return True
 
 
+def _caller_frame() -> Any:
+    """Return the first frame outside this module (rclpy's ``_find_caller``)."""
+    frame = sys._getframe(1)
+    while frame.f_back is not None and os.path.realpath(frame.f_code.co_filename) == _THIS_FILE:
+        frame = frame.f_back
+    return frame
+
+
 class Logger:
-    """A named logger with rclpy's ``RcutilsLogger`` methods."""
+    """
+    A named logger with rclpy's ``RcutilsLogger`` methods and per-call-site rules.
+
+    As in rclpy, each logger object keeps one context per call site
+    (:data:`CallerId`): the first call fixes its severity, ``name=`` and filter options, and a
+    later call from the same site that changes any of them raises ``ValueError`` — e.g.
+    ``(logger.warning if bad else logger.error)(text)`` fails on its second, different call.
+    """
 
     def __init__(self, name: str = '') -> None:
         self.name = name
+        self._contexts: dict[CallerId, dict[str, Any]] = {}
+        self._contexts_lock = threading.Lock()
 
     def get_child(self, name: str) -> Logger:
         """Return the logger ``<this name>.<name>``."""
@@ -292,28 +371,43 @@ class Logger:
         :param kwargs: ``once=True``, ``skip_first=True``, ``throttle_duration_sec=<float>``
             (evaluated in rclpy's order: throttle, skip_first, once), ``name=`` another logger.
         :return: whether the message was printed.
-        :raises TypeError: for an unknown option, with rclpy's text.
+        :raises TypeError: for an unknown or incomplete option, or a message that is not a
+            ``str`` (rclpy's C logging function takes strings only).
+        :raises ValueError: when this call site changes its severity, name or filter options.
         """
         severity = LoggingSeverity(severity)
         name = kwargs.pop('name', self.name)
         filters = _detect_filters(kwargs)
-        frame = sys._getframe(1)
-        while frame.f_back is not None and frame.f_code.co_filename == __file__:
-            frame = frame.f_back
-        if not get_logger_effective_level(name) <= severity:
-            return False
-        if filters:
-            call_site = (name, frame.f_code.co_filename, frame.f_lineno)
-            with _STATE.lock:
-                state = _STATE.call_sites.setdefault(call_site, {})
-                for filter_name in filters:
-                    if not _filter_allows(filter_name, state, kwargs):
-                        return False
+        frame = _caller_frame()
+        caller: CallerId = (
+            frame.f_code.co_name,
+            os.path.abspath(frame.f_code.co_filename),
+            frame.f_lineno,
+            frame.f_lasti,
+        )
+        with self._contexts_lock:
+            context = self._contexts.get(caller)
+            if context is None:
+                context = _new_context(name, severity, filters, kwargs)
+                self._contexts[caller] = context
+            else:
+                _check_unchanged(context, name, severity, filters, kwargs)
+            if not self.is_enabled_for(severity):
+                return False
+            for filter_name in filters:
+                if not _should_log(filter_name, context):
+                    return False
+        if not isinstance(message, str):
+            msg = (
+                'rclpy_logging_rcutils_log(): incompatible function arguments '
+                f'(the message must be a str, got {type(message).__name__})'
+            )
+            raise TypeError(msg)
         stream = _stream()
         line = format_log_line(
             severity,
             name,
-            str(message),
+            message,
             time.time_ns(),
             output_format=os.environ.get('RCUTILS_CONSOLE_OUTPUT_FORMAT') or DEFAULT_OUTPUT_FORMAT,
             function_name=frame.f_code.co_name,
