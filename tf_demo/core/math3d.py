@@ -48,6 +48,7 @@ IDENTITY_QUAT: Quat = (0.0, 0.0, 0.0, 1.0)
 ZERO_VEC: Vec3 = (0.0, 0.0, 0.0)
 
 _HALF_PI = math.pi / 2.0
+_sqrt = math.sqrt
 
 __all__ = [
     'IDENTITY_QUAT',
@@ -325,8 +326,10 @@ def canonical_quat(q: Quat) -> Quat:
     """
     Return ``q`` as tf2 stores it on insert: normalised and sign-canonicalised.
 
-    tf2 converts the message quaternion to a matrix (dividing by ``|q|^2``) and back; this is
-    :func:`quat_from_matrix` of :func:`matrix_from_quat` with the same arithmetic, inlined.
+    tf2 converts the message quaternion to a matrix (dividing by ``|q|^2``) and back.  The
+    sign follows that matrix's diagonal, computed with the same arithmetic; when its trace is
+    positive (``w`` dominates) the result is ``q / |q|`` with ``w > 0``, equal to the matrix
+    route to about 1e-16; otherwise it is :func:`quat_from_matrix` of :func:`matrix_from_quat`.
     Zero, infinite or NaN input yields NaN components.
     """
     x, y, z, w = q
@@ -334,31 +337,14 @@ def canonical_quat(q: Quat) -> Quat:
     if not d:
         return (math.nan, math.nan, math.nan, math.nan)
     s = 2.0 / d
-    xs = x * s
-    ys = y * s
-    zs = z * s
-    xx = x * xs
-    yy = y * ys
-    zz = z * zs
-    m00 = 1.0 - (yy + zz)
-    m11 = 1.0 - (xx + zz)
-    m22 = 1.0 - (xx + yy)
-    trace = m00 + m11 + m22
-    if trace > 0.0:
-        wx = w * xs
-        wy = w * ys
-        wz = w * zs
-        xy = x * ys
-        xz = x * zs
-        yz = y * zs
-        r = math.sqrt(trace + 1.0)
-        half = 0.5 / r
-        return (
-            (yz + wx - (yz - wx)) * half,
-            (xz + wy - (xz - wy)) * half,
-            (xy + wz - (xy - wz)) * half,
-            r * 0.5,
-        )
+    xx = x * (x * s)
+    yy = y * (y * s)
+    zz = z * (z * s)
+    if (1.0 - (yy + zz)) + (1.0 - (xx + zz)) + (1.0 - (xx + yy)) > 0.0:
+        inverse = 1.0 / _sqrt(d)
+        if w < 0.0:
+            inverse = -inverse
+        return (x * inverse, y * inverse, z * inverse, w * inverse)
     return quat_from_matrix(matrix_from_quat(q))
 
 
