@@ -57,7 +57,7 @@ _IDENTITY_ROW = np.array([[0.0, 0.0, 0.0, 1.0]])
 #: Largest slerp angle for which :func:`_interpolate_rows` derives the cosine from the sine.
 _SQRT_COSINE_MAX_THETA = 1.0
 #: Most lanes per pass of :func:`batch_walk_uniform` (passes are balanced).
-UNIFORM_CHUNK = 8192
+UNIFORM_CHUNK = 4096
 
 
 def _accumulate(
@@ -147,14 +147,13 @@ def _interpolate(arrays: CacheArrays, older: IntArray, ratio: FloatArray) -> Flo
 
 def _interpolate_rows(arrays: CacheArrays, older: IntArray, ratio: FloatArray) -> FloatArray:
     """Return :func:`_interpolate`'s result as ``(7, M)``: one contiguous row per component."""
-    take = np.take
     rows = arrays.intervals
     out = np.empty((7, older.shape[0]))
     for i in range(3):  # t0 + ratio (t1 - t0)
         row = out[i]
-        np.multiply(take(rows[3 + i], older), ratio, out=row)
-        row += take(rows[i], older)
-    theta = take(rows[14], older)
+        np.multiply(rows[3 + i].take(older), ratio, out=row)
+        row += rows[i].take(older)
+    theta = rows[14].take(older)
     if arrays.max_theta <= _SQRT_COSINE_MAX_THETA:
         # One sine per lane.  tf2's slerp q0 sin(keep t) / sin t + q1 sin(ratio t) / sin t is
         # q0 cos(ratio t) + b sin(ratio t) with b = q1 / sin t - q0 cot t per interval, and
@@ -167,21 +166,21 @@ def _interpolate_rows(arrays: CacheArrays, older: IntArray, ratio: FloatArray) -
         np.sqrt(cosine, out=cosine)
         for i in range(4):
             row = out[3 + i]
-            np.multiply(take(rows[6 + i], older), cosine, out=row)
-            row += take(rows[18 + i], older) * sine
+            np.multiply(rows[6 + i].take(older), cosine, out=row)
+            row += rows[18 + i].take(older) * sine
         return out
     keep = 1.0 - ratio
     scales = np.empty((2, older.shape[0]))
     np.multiply(keep, theta, out=scales[0])
     np.multiply(ratio, theta, out=scales[1])
     np.sin(scales, out=scales)
-    scales *= take(rows[15], older)
+    scales *= rows[15].take(older)
     s0 = scales[0]
     s1 = scales[1]
     for i in range(4):
         row = out[3 + i]
-        np.multiply(take(rows[6 + i], older), s0, out=row)
-        row += take(rows[10 + i], older) * s1
+        np.multiply(rows[6 + i].take(older), s0, out=row)
+        row += rows[10 + i].take(older) * s1
     if arrays.any_still:
         still = theta == 0.0
         if still.any():  # a zero angle returns the older rotation unchanged, as tf2's slerp
@@ -200,8 +199,8 @@ def _older_indices(stamps: IntArray, times: IntArray) -> IntArray:
     span = float(stamps[-1] - stamps[0])
     guess: IntArray = ((times - stamps[0]).astype(np.float64) * (last / span)).astype(np.int64)
     np.minimum(guess, last - 1, out=guess)  # times are inside: the guess is >= 0
-    hit = np.take(stamps, guess) <= times
-    hit &= np.take(stamps, guess + 1) > times
+    hit = stamps.take(guess) <= times
+    hit &= stamps.take(guess + 1) > times
     if not hit.all():
         miss = ~hit
         guess[miss] = np.searchsorted(stamps, times[miss], side='right') - 1
@@ -237,8 +236,8 @@ def sample_batch(
     if size > 1 and count and times.min() > earliest and times.max() < latest:
         # Fast path: every lane is strictly inside the history.
         older = _older_indices(stamps, times)
-        ratio = (times - np.take(stamps, older)).astype(np.float64)
-        ratio /= np.take(arrays.intervals[16], older)
+        ratio = (times - stamps.take(older)).astype(np.float64)
+        ratio /= arrays.intervals[16].take(older)
         values = _interpolate(arrays, older, ratio)
         if not arrays.any_parent_change:
             return values, parent_ids[:1], None
@@ -349,8 +348,8 @@ def _chain_product(links: list[TimeCache | StaticCache], times: IntArray) -> Lin
         arrays = cache.arrays()
         stamps = arrays.stamps
         older = _older_indices(stamps, times)
-        ratio = (times - np.take(stamps, older)).astype(np.float64)
-        ratio /= np.take(arrays.intervals[16], older)
+        ratio = (times - stamps.take(older)).astype(np.float64)
+        ratio /= arrays.intervals[16].take(older)
         rows = _interpolate_rows(arrays, older, ratio)
         link = (rows[0], rows[1], rows[2], rows[3], rows[4], rows[5], rows[6])
         if first:
