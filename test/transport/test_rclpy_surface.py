@@ -68,10 +68,17 @@ ANY = object()
 Param = tuple[str, str, Any]
 
 
-def _params(*names: str, kw: Sequence[tuple[str, Any]] = (), **defaults: Any) -> list[Param]:
-    """Build a parameter list: ``names`` positional (``defaults`` by name), ``kw`` keyword-only."""
+def _params(
+    *names: str, kw: Sequence[tuple[str, Any]] = (), var_kw: bool = False, **defaults: Any
+) -> list[Param]:
+    """
+    Build a parameter list: ``names`` positional (``defaults`` by name), ``kw`` keyword-only.
+
+    ``var_kw``: the function also takes ``**kwargs`` (kind ``'varkw'``).
+    """
     params = [(name, 'pos', defaults.get(name, REQUIRED)) for name in names]
-    return params + [(name, 'kw', default) for name, default in kw]
+    params += [(name, 'kw', default) for name, default in kw]
+    return params + ([('**', 'varkw', REQUIRED)] if var_kw else [])
 
 
 _NODE_OPTIONS: list[tuple[str, Any]] = [
@@ -198,6 +205,18 @@ RCLPY_LOGGER_METHODS = frozenset(
      'get_effective_level', 'is_enabled_for'}
 )  # fmt: skip
 
+#: rclpy/rclpy/impl/rcutils_logger.py: RcutilsLogger's signatures (``self`` omitted).
+RCLPY_LOGGER: dict[str, list[Param]] = {
+    '__init__': _params('name', name=''),
+    'get_child': _params('name'),
+    'set_level': _params('level'),
+    'get_effective_level': _params(),
+    'is_enabled_for': _params('severity'),
+    **{method: _params('message', var_kw=True) for method in ('debug', 'info', 'warning',
+                                                              'warn', 'error', 'fatal')},
+    'log': _params('message', 'severity', var_kw=True),
+}  # fmt: skip
+
 #: rclpy parameters the standalone backend may leave out (never used by tf_demo's node code).
 UNSUPPORTED_RCLPY_PARAMETERS = frozenset(
     {('init', 'domain_id'), ('init', 'signal_handler_options'), ('shutdown', 'uninstall_handlers')}
@@ -206,11 +225,15 @@ UNSUPPORTED_RCLPY_PARAMETERS = frozenset(
 
 def signature_of(params: list[Param]) -> inspect.Signature:
     """Return an ``inspect.Signature`` for rclpy parameter data (defaults as placeholders)."""
-    kinds = {'pos': inspect.Parameter.POSITIONAL_OR_KEYWORD, 'kw': inspect.Parameter.KEYWORD_ONLY}
+    kinds = {
+        'pos': inspect.Parameter.POSITIONAL_OR_KEYWORD,
+        'kw': inspect.Parameter.KEYWORD_ONLY,
+        'varkw': inspect.Parameter.VAR_KEYWORD,
+    }
     return inspect.Signature(
         [
             inspect.Parameter(
-                name,
+                'kwargs' if kind == 'varkw' else name,
                 kinds[kind],
                 default=inspect.Parameter.empty if default is REQUIRED else default,
             )
@@ -235,12 +258,17 @@ def incompatibilities(
     not have; every rclpy parameter exists on our side unless listed as unsupported.
     """
     ours = _ours(function, bound=bound)
+    their_var_kw = any(kind == 'varkw' for _, kind, _ in rclpy_params)
     problems = [
         f'{label}: {parameter} accepts what rclpy rejects'
         for parameter in ours
-        if parameter.kind in (inspect.Parameter.VAR_POSITIONAL, inspect.Parameter.VAR_KEYWORD)
+        if parameter.kind is inspect.Parameter.VAR_POSITIONAL
+        or (parameter.kind is inspect.Parameter.VAR_KEYWORD and not their_var_kw)
     ]
+    if their_var_kw and not any(p.kind is p.VAR_KEYWORD for p in ours):
+        problems.append(f'{label}: rclpy takes **kwargs')
     ours = [p for p in ours if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+    rclpy_params = [param for param in rclpy_params if param[1] != 'varkw']
     theirs = {name: (kind, default) for name, kind, default in rclpy_params}
     our_positional = [p.name for p in ours if p.kind is not p.KEYWORD_ONLY]
     their_positional = [name for name, kind, _ in rclpy_params if kind == 'pos']
@@ -290,6 +318,10 @@ def _surface_cases() -> Iterator[Any]:
         cases.append((f'DdsPublisher.{name}', getattr(dds.DdsPublisher, name), params, True))
     for name, params in RCLPY_SUBSCRIPTION.items():
         cases.append((f'DdsSubscription.{name}', getattr(dds.DdsSubscription, name), params, True))
+    from tf_demo.transport.logging import Logger
+
+    for name, params in RCLPY_LOGGER.items():
+        cases.append((f'Logger.{name}', getattr(Logger, name), params, True))
     for label, function, params, bound in cases:
         yield pytest.param(label, function, params, bound, id=label)
 
@@ -313,9 +345,18 @@ def test_the_signature_checker_catches_each_kind_of_divergence() -> None:
     def positional_c(self: object, a: object, b: object = 1, c: object = None) -> None: ...
     def missing_c(self: object, a: object, b: object = 1) -> None: ...
 
+    def _a_kwargs(self: object, a: object, **kwargs: object) -> None: ...
+
     assert incompatibilities('same', same, reference, bound=True) == []
     for function in (swallow, reordered, other_default, positional_c, missing_c):
         assert incompatibilities(function.__name__, function, reference, bound=True)
+    with_kwargs = _params('a', var_kw=True)
+    assert "swallow: 'b' is not an rclpy parameter" in incompatibilities(
+        'swallow', swallow, with_kwargs, bound=True
+    )
+    assert incompatibilities('a_kwargs', _a_kwargs, with_kwargs, bound=True) == []
+    assert incompatibilities('missing_c', missing_c, with_kwargs, bound=True)
+    assert bind_problem_for('f(1, x=2)', with_kwargs) is None
 
 
 # --------------------------------------------------------------------------------------------
@@ -387,6 +428,12 @@ def bind_problem(site: CallSite, params: list[Param]) -> str | None:
     except TypeError as error:
         return f'{site.path}:{site.line}: {ast.unparse(call)} -> {error}'
     return None
+
+
+def bind_problem_for(code: str, params: list[Param]) -> str | None:
+    """``bind_problem`` for a call written as code (``f(...)``)."""
+    call = ast.parse(code).body[0].value  # type: ignore[attr-defined]
+    return bind_problem(CallSite('x.py', 1, 'node', 'f', call), params)
 
 
 def _super_init_in_node_subclasses() -> set[tuple[str, int]]:
