@@ -22,14 +22,18 @@ No ROS is installed here, so rclpy's API is written below as data, read from ups
 - ``rclpy/rclpy/__init__.py`` at 26a7251 (``init``, ``shutdown``, ``create_node``, ``spin*``),
 - ``rclpy/rclpy/executors.py``, ``publisher.py`` (``publish(msg: MsgType | bytes)``) and
   ``subscription.py`` (the ``callback`` setter decides between ``msg`` and ``msg, info``),
+- ``rclpy/rclpy/impl/rcutils_logger.py`` (``RcutilsLogger``; one context per call site),
 - ``rosidl_generator_py``'s generated message setters (``_idl.py.em``): with
   ``ROS_PYTHON_CHECK_FIELDS=1`` (the default before Iron) they assert the Python type of every
   field value, e.g. ``The 'x' field must be of type 'float'``.
 
-The tests check (1) that the standalone backend offers the same signatures, (2) that every call
-site in ``tf_demo/ros``, ``tf_demo/nodes`` and ``tf_demo/cli`` binds to rclpy's signatures,
-(3) that the messages our node code builds would pass rclpy's field checks, (4) that
-``rclpy_backend`` stays a pure pass-through, and (5) the backend selection rules.
+The tests check (1) that the standalone backend (nodes, executors, publishers, subscriptions,
+loggers, module functions) offers the same signatures, (2) that every call site in
+``tf_demo/ros``, ``tf_demo/nodes`` and ``tf_demo/cli`` binds to rclpy's signatures and never logs
+at two severities from one call site, (3) that the messages our node code builds and publishes
+would pass rclpy's field checks, (4) that ``rclpy_backend`` stays a pure pass-through that
+replaces every rclpy concept of the node API, (5) the backend selection rules, and (6) standalone
+behaviour that rclpy specifies (callback arity, ``publish`` types, ``try_shutdown``, stop signals).
 """
 
 from __future__ import annotations
