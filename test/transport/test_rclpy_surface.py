@@ -1286,3 +1286,20 @@ def test_the_severity_check_sees_both_forms() -> None:
     assert not _severity_varies(call('logger.log(text, LoggingSeverity.WARN)'))
     assert not _severity_varies(call('logger.warning(text)'))
     assert not _severity_varies(call("logging.getLogger('x').log(level, text)"))
+
+
+@pytest.mark.dds
+@pytest.mark.parametrize('signal_name', ['SIGTERM', 'SIGINT'])
+def test_a_cli_tool_stops_on_a_stop_signal_with_exit_0(spawn: Any, signal_name: str) -> None:
+    """tf_echo (run_tool: SIGTERM handler set before init, as rclpy needs) exits 0 quietly."""
+    import signal
+
+    echo = spawn.start('tf_echo', 'nowhere', 'nothing')
+    assert echo.stderr is not None
+    for line in echo.stderr:  # bounded by the process's own output
+        if 'Waiting for transform' in line:
+            break
+    echo.send_signal(getattr(signal, signal_name))
+    _, stderr = echo.communicate(timeout=30)
+    assert echo.returncode == 0, stderr
+    assert 'Traceback' not in stderr

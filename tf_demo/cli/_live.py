@@ -217,13 +217,16 @@ def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int
         del signum, frame
         raise KeyboardInterrupt
 
+    # Installed before init: rclpy.init puts its own SIGTERM handler on top, which calls this
+    # one and then wakes the executors (a blocked transport.spin() would not wake otherwise).
+    previous = signal.signal(signal.SIGTERM, terminate)
     try:
         transport.init(args=[tool, *ros_args])
     except (transport.RosArgsError, transport.BackendError) as error:
+        signal.signal(signal.SIGTERM, previous)
         print(ROS_ARGS_USAGE.replace('<executable>', tool), file=sys.stderr)
         print_error(tool, str(error))
         return 1
-    previous = signal.signal(signal.SIGTERM, terminate)
     try:
         return body()
     except KeyboardInterrupt:
@@ -238,9 +241,9 @@ def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int
         print_error(tool, str(error))
         return 1
     finally:
-        signal.signal(signal.SIGTERM, previous)
         try:
             if transport.ok():
                 transport.shutdown()
-        except Exception:
+        except (Exception, KeyboardInterrupt):  # a second stop request during clean-up
             pass
+        signal.signal(signal.SIGTERM, previous)
