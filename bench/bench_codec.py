@@ -25,75 +25,27 @@ No ``from __future__ import annotations``: cyclonedds reads the annotations at c
 
 import argparse
 from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
 import statistics
 import sys
 import time
 import timeit
 
-from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.annotations import final
-import cyclonedds.idl.types as idl
-
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # tf_demo from this checkout
+# The cyclonedds IdlStruct twins of the ROS types, shared with test/msgs.
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / 'test' / 'msgs'))
 
+from cyclonedds_reference_types import Header_
+from cyclonedds_reference_types import Quaternion_
+from cyclonedds_reference_types import TFMessage_
+from cyclonedds_reference_types import Time_
+from cyclonedds_reference_types import Transform_
+from cyclonedds_reference_types import TransformStamped_
+from cyclonedds_reference_types import Vector3_
 from tf_demo.msgs import cdr
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.geometry_msgs import TransformStamped
 from tf_demo.msgs.tf2_msgs import TFMessage
-
-
-@dataclass
-@final
-class Time_(IdlStruct, typename='builtin_interfaces::msg::dds_::Time_'):  # noqa: N801
-    sec: idl.int32
-    nanosec: idl.uint32
-
-
-@dataclass
-@final
-class Header_(IdlStruct, typename='std_msgs::msg::dds_::Header_'):  # noqa: N801
-    stamp: Time_
-    frame_id: str
-
-
-@dataclass
-@final
-class Vector3_(IdlStruct, typename='geometry_msgs::msg::dds_::Vector3_'):  # noqa: N801
-    x: idl.float64
-    y: idl.float64
-    z: idl.float64
-
-
-@dataclass
-@final
-class Quaternion_(IdlStruct, typename='geometry_msgs::msg::dds_::Quaternion_'):  # noqa: N801
-    x: idl.float64
-    y: idl.float64
-    z: idl.float64
-    w: idl.float64
-
-
-@dataclass
-@final
-class Transform_(IdlStruct, typename='geometry_msgs::msg::dds_::Transform_'):  # noqa: N801
-    translation: Vector3_
-    rotation: Quaternion_
-
-
-@dataclass
-@final
-class TransformStamped_(IdlStruct, typename='geometry_msgs::msg::dds_::TransformStamped_'):  # noqa: N801
-    header: Header_
-    child_frame_id: str
-    transform: Transform_
-
-
-@dataclass
-@final
-class TFMessage_(IdlStruct, typename='tf2_msgs::msg::dds_::TFMessage_'):  # noqa: N801
-    transforms: idl.sequence[TransformStamped_]
 
 
 def make_messages(count: int) -> tuple[TFMessage, TFMessage_]:

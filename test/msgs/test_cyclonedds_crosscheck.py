@@ -17,12 +17,16 @@
 No ``from __future__ import annotations`` here: cyclonedds reads the annotations at class creation.
 """
 
-from dataclasses import dataclass
 from typing import Any
 
-from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.annotations import final
-import cyclonedds.idl.types as idl
+from cyclonedds_reference_types import Header_
+from cyclonedds_reference_types import JointState_
+from cyclonedds_reference_types import Quaternion_
+from cyclonedds_reference_types import TFMessage_
+from cyclonedds_reference_types import Time_
+from cyclonedds_reference_types import Transform_
+from cyclonedds_reference_types import TransformStamped_
+from cyclonedds_reference_types import Vector3_
 from hypothesis import given
 from hypothesis import settings
 from msgs_strategies import message_strategy
@@ -30,68 +34,6 @@ import pytest
 from tf_demo.msgs import cdr
 from tf_demo.msgs.sensor_msgs import JointState
 from tf_demo.msgs.tf2_msgs import TFMessage
-
-
-@dataclass
-@final
-class Time_(IdlStruct, typename='builtin_interfaces::msg::dds_::Time_'):  # noqa: N801
-    sec: idl.int32
-    nanosec: idl.uint32
-
-
-@dataclass
-@final
-class Header_(IdlStruct, typename='std_msgs::msg::dds_::Header_'):  # noqa: N801
-    stamp: Time_
-    frame_id: str
-
-
-@dataclass
-@final
-class Vector3_(IdlStruct, typename='geometry_msgs::msg::dds_::Vector3_'):  # noqa: N801
-    x: idl.float64
-    y: idl.float64
-    z: idl.float64
-
-
-@dataclass
-@final
-class Quaternion_(IdlStruct, typename='geometry_msgs::msg::dds_::Quaternion_'):  # noqa: N801
-    x: idl.float64
-    y: idl.float64
-    z: idl.float64
-    w: idl.float64
-
-
-@dataclass
-@final
-class Transform_(IdlStruct, typename='geometry_msgs::msg::dds_::Transform_'):  # noqa: N801
-    translation: Vector3_
-    rotation: Quaternion_
-
-
-@dataclass
-@final
-class TransformStamped_(IdlStruct, typename='geometry_msgs::msg::dds_::TransformStamped_'):  # noqa: N801
-    header: Header_
-    child_frame_id: str
-    transform: Transform_
-
-
-@dataclass
-@final
-class TFMessage_(IdlStruct, typename='tf2_msgs::msg::dds_::TFMessage_'):  # noqa: N801
-    transforms: idl.sequence[TransformStamped_]
-
-
-@dataclass
-@final
-class JointState_(IdlStruct, typename='sensor_msgs::msg::dds_::JointState_'):  # noqa: N801
-    header: Header_
-    name: idl.sequence[str]
-    position: idl.sequence[idl.float64]
-    velocity: idl.sequence[idl.float64]
-    effort: idl.sequence[idl.float64]
 
 
 def _header(header: Any) -> Header_:

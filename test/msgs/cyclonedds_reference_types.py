@@ -1,0 +1,88 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+cyclonedds-python ``IdlStruct`` twins of the ROS types the codec tests and benchmark compare with.
+
+Final structs with the ROS DDS type names, as rmw_cyclonedds declares them. No
+``from __future__ import annotations``: cyclonedds reads the annotations at class creation.
+"""
+
+from dataclasses import dataclass
+
+from cyclonedds.idl import IdlStruct
+from cyclonedds.idl.annotations import final
+import cyclonedds.idl.types as idl
+
+
+@dataclass
+@final
+class Time_(IdlStruct, typename='builtin_interfaces::msg::dds_::Time_'):  # noqa: N801
+    sec: idl.int32
+    nanosec: idl.uint32
+
+
+@dataclass
+@final
+class Header_(IdlStruct, typename='std_msgs::msg::dds_::Header_'):  # noqa: N801
+    stamp: Time_
+    frame_id: str
+
+
+@dataclass
+@final
+class Vector3_(IdlStruct, typename='geometry_msgs::msg::dds_::Vector3_'):  # noqa: N801
+    x: idl.float64
+    y: idl.float64
+    z: idl.float64
+
+
+@dataclass
+@final
+class Quaternion_(IdlStruct, typename='geometry_msgs::msg::dds_::Quaternion_'):  # noqa: N801
+    x: idl.float64
+    y: idl.float64
+    z: idl.float64
+    w: idl.float64
+
+
+@dataclass
+@final
+class Transform_(IdlStruct, typename='geometry_msgs::msg::dds_::Transform_'):  # noqa: N801
+    translation: Vector3_
+    rotation: Quaternion_
+
+
+@dataclass
+@final
+class TransformStamped_(IdlStruct, typename='geometry_msgs::msg::dds_::TransformStamped_'):  # noqa: N801
+    header: Header_
+    child_frame_id: str
+    transform: Transform_
+
+
+@dataclass
+@final
+class TFMessage_(IdlStruct, typename='tf2_msgs::msg::dds_::TFMessage_'):  # noqa: N801
+    transforms: idl.sequence[TransformStamped_]
+
+
+@dataclass
+@final
+class JointState_(IdlStruct, typename='sensor_msgs::msg::dds_::JointState_'):  # noqa: N801
+    header: Header_
+    name: idl.sequence[str]
+    position: idl.sequence[idl.float64]
+    velocity: idl.sequence[idl.float64]
+    effort: idl.sequence[idl.float64]
