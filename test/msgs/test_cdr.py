@@ -338,10 +338,26 @@ def test_unknown_types_are_a_cdr_error() -> None:
     assert cdr.msgtype_of('geometry_msgs/Vector3') == 'geometry_msgs/msg/Vector3'
 
 
-def _big_endian_tf_message(
-    transforms: list[tuple[str, str, int, int, tuple[float, ...]]],
-) -> bytes:
+def _big_endian_tf_message(message: Any) -> bytes:
     """Write a TFMessage as CDR_BE by the layout rules (a second, independent writer)."""
+    transforms: list[tuple[str, str, int, int, tuple[float, ...]]] = [
+        (
+            t.header.frame_id,
+            t.child_frame_id,
+            t.header.stamp.sec,
+            t.header.stamp.nanosec,
+            (
+                t.transform.translation.x,
+                t.transform.translation.y,
+                t.transform.translation.z,
+                t.transform.rotation.x,
+                t.transform.rotation.y,
+                t.transform.rotation.z,
+                t.transform.rotation.w,
+            ),
+        )
+        for t in message.transforms
+    ]
     out = bytearray(b'\x00\x00\x00\x00' + pack('>I', len(transforms)))
 
     def align(alignment: int) -> None:
@@ -363,25 +379,7 @@ def _big_endian_tf_message(
 @given(message=message_strategy('tf2_msgs/msg/TFMessage'))
 def test_big_endian_tf_messages_decode_like_little_endian(message: Any) -> None:
     """Multi-transform CDR_BE input decodes to the same message on both decode paths."""
-    transforms: list[tuple[str, str, int, int, tuple[float, ...]]] = [
-        (
-            t.header.frame_id,
-            t.child_frame_id,
-            t.header.stamp.sec,
-            t.header.stamp.nanosec,
-            (
-                t.transform.translation.x,
-                t.transform.translation.y,
-                t.transform.translation.z,
-                t.transform.rotation.x,
-                t.transform.rotation.y,
-                t.transform.rotation.z,
-                t.transform.rotation.w,
-            ),
-        )
-        for t in message.transforms
-    ]
-    big_endian = _big_endian_tf_message(transforms)
+    big_endian = _big_endian_tf_message(message)
     assert cdr.deserialize(TFMessage, big_endian) == message
     assert cdr.decode_tf_message_transforms(big_endian) == cdr.decode_tf_message_transforms(
         cdr.serialize(message)
@@ -440,25 +438,7 @@ def test_known_tf_layouts_decode_mutated_bytes_like_the_reference(
 
 def reference_serialize_big_endian(message: Any) -> bytes:
     """Return the CDR_BE body of a TFMessage, written by the layout rules."""
-    transforms: list[tuple[str, str, int, int, tuple[float, ...]]] = [
-        (
-            t.header.frame_id,
-            t.child_frame_id,
-            t.header.stamp.sec,
-            t.header.stamp.nanosec,
-            (
-                t.transform.translation.x,
-                t.transform.translation.y,
-                t.transform.translation.z,
-                t.transform.rotation.x,
-                t.transform.rotation.y,
-                t.transform.rotation.z,
-                t.transform.rotation.w,
-            ),
-        )
-        for t in message.transforms
-    ]
-    return _big_endian_tf_message(transforms)[4:]
+    return _big_endian_tf_message(message)[4:]
 
 
 def _tf_message(*frames: tuple[str, str]) -> TFMessage:
