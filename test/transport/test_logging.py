@@ -22,6 +22,8 @@ import sys
 from typing import Any
 
 import pytest
+from tf_demo.transport.clock import Clock
+from tf_demo.transport.clock import ClockType
 from tf_demo.transport.logging import format_log_line
 from tf_demo.transport.logging import get_logger
 from tf_demo.transport.logging import get_logging_severity_from_string
@@ -244,8 +246,18 @@ def test_incomplete_or_unsupported_filter_options_are_refused_with_rclpys_texts(
     logger = get_logger('test_logging_filter_texts')
     with pytest.raises(TypeError, match='required parameter "throttle_duration_sec" not spec'):
         logger.info('x', throttle_time_source_type='RCUTILS_STEADY_TIME')
-    with pytest.raises(ValueError, match='currently only RCUTILS_STEADY_TIME is supported'):
+    with pytest.raises(ValueError, match='"RCUTILS_ROS_TIME" is not a clock instance'):
         logger.info('x', throttle_duration_sec=1.0, throttle_time_source_type='RCUTILS_ROS_TIME')
+
+
+def test_throttle_measures_on_the_given_clock_and_logs_the_first_call() -> None:
+    """rclpy Jazzy's throttle: system time by default (the first call logs), or a given Clock."""
+    logger = get_logger('test_logging_throttle_clock')
+    system = [logger.info('a', throttle_duration_sec=1e6) for _ in range(2)]
+    steady = Clock(clock_type=ClockType.STEADY_TIME)
+    given = logger.info('b', throttle_duration_sec=1e-3, throttle_time_source_type=steady)
+    assert system == [True, False]
+    assert given is True  # steady time since boot is past 1 ms
 
 
 def test_messages_must_be_strings_when_printed() -> None:

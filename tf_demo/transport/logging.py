@@ -199,12 +199,33 @@ def get_logger_effective_level(name: str) -> LoggingSeverity:
     return _STATE.effective_level(name)
 
 
+_SYSTEM_CLOCK: Any = None
+"""The throttle filter's default time source, rclpy's module-level ``Clock()`` (system time)."""
+
+
+def _system_clock() -> Any:
+    """Return the one system-time clock the throttle filter defaults to (made on first use)."""
+    global _SYSTEM_CLOCK
+    if _SYSTEM_CLOCK is None:
+        from tf_demo.transport.clock import Clock
+
+        _SYSTEM_CLOCK = Clock()
+    return _SYSTEM_CLOCK
+
+
+def _resolved(default: Any) -> Any:
+    """Return a filter parameter's default as a call site stores it (the clock made real)."""
+    return _system_clock() if default is _DEFAULT_CLOCK else default
+
+
 # rclpy's filters, in the order rclpy evaluates them, with their parameters and defaults
-# (None: required). rclpy/rclpy/impl/rcutils_logger.py: Throttle, SkipFirst, Once.
+# (None: required; _DEFAULT_CLOCK: the system clock). rclpy/rclpy/impl/rcutils_logger.py:
+# Throttle, SkipFirst, Once.
+_DEFAULT_CLOCK = object()
 _FILTER_PARAMETERS: dict[str, dict[str, Any]] = {
     'throttle': {
         'throttle_duration_sec': None,
-        'throttle_time_source_type': 'RCUTILS_STEADY_TIME',
+        'throttle_time_source_type': _DEFAULT_CLOCK,
     },
     'skip_first': {'skip_first': None},
     'once': {'once': None},
@@ -259,13 +280,16 @@ def _new_context(
         for param, default in _FILTER_PARAMETERS[filter_name].items():
             context[param] = options.get(param, default)
         if filter_name == 'throttle':
-            context['throttle_last_logged'] = 0.0
+            # rclpy Jazzy: the last time starts at 0 on the chosen clock, so the first call
+            # always logs; the time source must be a Clock (system time unless given).
+            context['throttle_last_logged'] = 0
+            from tf_demo.transport.clock import Clock
+
             source = context['throttle_time_source_type']
-            if source != 'RCUTILS_STEADY_TIME':
-                msg = (
-                    f'Received throttle_time_source_type of "{source}"; currently only '
-                    'RCUTILS_STEADY_TIME is supported (simulated with python time.monotonic)'
-                )
+            if source is _DEFAULT_CLOCK:
+                source = context['throttle_time_source_type'] = _system_clock()
+            if not isinstance(source, Clock):
+                msg = f'Received throttle_time_source_type of "{source}" is not a clock instance'
                 raise ValueError(msg)
         elif filter_name == 'skip_first':
             context['first_has_been_skipped'] = False
@@ -298,7 +322,7 @@ def _check_unchanged(
         raise ValueError(msg)
     for filter_name in filters:
         params = _FILTER_PARAMETERS[filter_name]
-        if any(context[param] != options.get(param, params[param]) for param in params):
+        if any(context[param] != options.get(param, _resolved(params[param])) for param in params):
             msg = 'Logging filter parameters cannot be changed between calls.'
             raise ValueError(msg)
 
@@ -306,8 +330,8 @@ def _check_unchanged(
 def _should_log(filter_name: str, context: dict[str, Any]) -> bool:
     """Apply one filter to a call site's state, updating it as rclpy's ``should_log`` does."""
     if filter_name == 'throttle':
-        now = time.monotonic()
-        if now < context['throttle_last_logged'] + float(context['throttle_duration_sec']):
+        now = context['throttle_time_source_type'].now().nanoseconds
+        if now < context['throttle_last_logged'] + float(context['throttle_duration_sec']) * 1e9:
             return False
         context['throttle_last_logged'] = now
         return True
