@@ -120,12 +120,14 @@ def test_can_transform_debug_tuple_and_core_names() -> None:
     assert buffer.can_transform_core('a', 'b', 0) == (ok, text)
 
 
-def test_set_transform_reports_rejection_and_static_survives_clear() -> None:
-    """A NaN transform is rejected (False); clear() drops dynamic data and keeps statics."""
+def test_set_transform_returns_none_and_static_survives_clear() -> None:
+    """set_transform* return None (tf2_ros); NaN is not stored; clear() keeps statics."""
     buffer = Buffer()
-    assert buffer.set_transform(transform_msg('a', 'b', S, (float('nan'), 0.0, 0.0)), 'x') is False
-    assert buffer.set_transform_static(transform_msg('a', 's', 0, (0.0, 1.0, 0.0)), 'x') is True
-    assert buffer.set_transform(transform_msg('a', 'd', S), 'x') is True
+    assert buffer.set_transform(transform_msg('a', 'b', S, (float('nan'), 0.0, 0.0)), 'x') is None
+    assert not buffer.can_transform('a', 'b', S)
+    assert buffer.set_transform_static(transform_msg('a', 's', 0, (0.0, 1.0, 0.0)), 'x') is None
+    assert buffer.set_transform(transform_msg('a', 'd', S), 'x') is None
+    assert buffer.can_transform('a', 'd', S)
     buffer.clear()
     assert buffer.lookup_transform('a', 's', 0).transform.translation.y == 1.0
     assert not buffer.can_transform('a', 'd', S)

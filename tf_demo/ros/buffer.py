@@ -313,25 +313,17 @@ class Buffer(BufferCore):
 
     # ---------------------------------------------------------------------- message in/out
 
-    def set_transform(self, transform: Any, authority: str) -> bool:  # type: ignore[override]
-        """
-        Insert a dynamic ``TransformStamped``.
+    def set_transform(self, transform: Any, authority: str) -> None:  # type: ignore[override]
+        """Insert a dynamic ``TransformStamped``; a rejected one is logged, as tf2_ros does."""
+        self._insert(transform, authority, is_static=False)
 
-        :return: whether the core stored it (errors are logged, as tf2 does).
-        """
-        return self._insert(transform, authority, is_static=False)
+    def set_transform_static(self, transform: Any, authority: str) -> None:
+        """Insert a static ``TransformStamped`` (valid at all times); rejections are logged."""
+        self._insert(transform, authority, is_static=True)
 
-    def set_transform_static(self, transform: Any, authority: str) -> bool:
-        """
-        Insert a static ``TransformStamped`` (valid at all times).
-
-        :return: whether the core stored it.
-        """
-        return self._insert(transform, authority, is_static=True)
-
-    def _insert(self, transform: Any, authority: str, *, is_static: bool) -> bool:
+    def _insert(self, transform: Any, authority: str, *, is_static: bool) -> None:
         parent, child, stamp_ns, translation, rotation = transform_stamped_args(transform)
-        return BufferCore.set_transform(
+        BufferCore.set_transform(
             self, parent, child, stamp_ns, translation, rotation, authority, is_static
         )
 
