@@ -34,6 +34,8 @@ from typing import IO
 from hypothesis import settings
 import pytest
 from tf_demo.testing import strategies  # noqa: F401  (registers the 'ci' and 'nightly' profiles)
+from tf_demo.transport.backend import backend_name
+from tf_demo.transport.backend import BackendError
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
 
@@ -69,11 +71,50 @@ def _exclusive_domain() -> Iterator[int]:
     raise RuntimeError(msg)
 
 
-@pytest.fixture
-def dds_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
-    """Environment for a test that talks DDS: its own domain id, loopback-only discovery.
+HAVE_CYCLONEDDS = importlib.util.find_spec('cyclonedds') is not None
 
-    The variables are also set in this process, so in-process nodes use the same domain.
+
+def _world() -> str:
+    """The world this pytest process runs in: ``'rclpy'`` or ``'dds'`` (standalone)."""
+    try:
+        return backend_name()
+    except BackendError:
+        return 'dds'
+
+
+WORLD = _world()
+"""``'rclpy'`` inside ROS 2 (rclpy imports), ``'dds'`` in the standalone world."""
+
+_WORLD_SKIPS = {
+    'standalone': (
+        WORLD != 'dds' or not HAVE_CYCLONEDDS,
+        'standalone world only: needs the cyclonedds Python package and TF_DEMO_BACKEND=dds '
+        '(this run is the '
+        + ('rclpy world' if WORLD == 'rclpy' else 'standalone world without cyclonedds')
+        + ')',
+    ),
+    'rclpy_world': (
+        WORLD != 'rclpy',
+        'rclpy world only: needs ROS 2 Jazzy sourced (rclpy does not import in this run)',
+    ),
+}
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """Skip, with the reason, every test whose world this run is not."""
+    for item in items:
+        for marker, (skip, reason) in _WORLD_SKIPS.items():
+            if skip and item.get_closest_marker(marker) is not None:
+                item.add_marker(pytest.mark.skip(reason=reason))
+
+
+@pytest.fixture
+def world_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
+    """Environment for a test that talks to other nodes, in this run's world.
+
+    Its own domain id and loopback-only discovery; ``TF_DEMO_BACKEND`` is this run's world, so
+    child processes run in the same world as the test. The variables are also set in this
+    process, so in-process nodes use the same domain.
     """
     with _exclusive_domain() as domain:
         env = dict(os.environ)
@@ -81,13 +122,15 @@ def dds_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
             {
                 'ROS_DOMAIN_ID': str(domain),
                 'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST',
-                'TF_DEMO_BACKEND': 'dds',
+                'TF_DEMO_BACKEND': WORLD,
                 'PYTHONUNBUFFERED': '1',
                 'PYTHONPATH': os.pathsep.join(
                     p for p in (str(REPO_ROOT), os.environ.get('PYTHONPATH', '')) if p
                 ),
             }
         )
+        if WORLD == 'rclpy':
+            env.setdefault('RMW_IMPLEMENTATION', 'rmw_cyclonedds_cpp')
         env.pop('ROS_LOCALHOST_ONLY', None)
         env.pop('CYCLONEDDS_URI', None)
         for key in ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE', 'TF_DEMO_BACKEND'):
@@ -95,6 +138,14 @@ def dds_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
         monkeypatch.delenv('ROS_LOCALHOST_ONLY', raising=False)
         monkeypatch.delenv('CYCLONEDDS_URI', raising=False)
         yield env
+
+
+@pytest.fixture
+def dds_env(world_env: dict[str, str]) -> dict[str, str]:
+    """:func:`world_env` for a standalone-only test (mark it ``standalone``): forces DDS."""
+    if WORLD != 'dds':
+        pytest.skip('standalone world only (this run is the rclpy world)')
+    return world_env
 
 
 def executable_command(name: str, *args: str) -> list[str]:
@@ -150,9 +201,9 @@ class Processes:
 
 
 @pytest.fixture
-def spawn(dds_env: dict[str, str], tmp_path: Path) -> Iterator[Processes]:
+def spawn(world_env: dict[str, str], tmp_path: Path) -> Iterator[Processes]:
     """Start this package's executables as real processes on the test's private domain."""
-    processes = Processes(dds_env, tmp_path)
+    processes = Processes(world_env, tmp_path)
     try:
         yield processes
     finally:
@@ -245,9 +296,9 @@ class ChildProcess(ProcessOutput):
 
 
 @pytest.fixture
-def ros(dds_env: dict[str, str]) -> Iterator[None]:
-    """Initialise the selected backend (DDS) in this process on the test's private domain."""
-    del dds_env
+def ros(world_env: dict[str, str]) -> Iterator[None]:
+    """Initialise this run's backend in this process on the test's private domain."""
+    del world_env
     from tf_demo import transport
 
     transport.init(['test'])
