@@ -2,10 +2,16 @@
 # Set up tf_demo on a fresh Debian 12 machine (Python 3.11, no ROS) and run one job.
 #
 #   bash tools/setup.sh demo [SECONDS]   live demo: static_tf_pub, dynamic_tf_pub, tf_listener, tf_echo
-#   bash tools/setup.sh test             the whole test suite through colcon build + colcon test
+#   bash tools/setup.sh test             the whole test suite, in both worlds
 #
 # It installs what it needs itself: Debian packages (apt), a virtual environment in .venv and the
-# pip packages (this package with its [dds,test] extras, colcon). Exit status is the job's.
+# pip packages (this package with its [dds,test] extras). Exit status is the job's.
+#
+# The test job runs the standalone suite (pytest in .venv, no ROS), then, where ROS 2 Jazzy is
+# installed (/opt/ros/jazzy/setup.bash), the ROS-world suite: colcon build + colcon test in an
+# overlay workspace on that Jazzy, with a virtual environment of the system Python that sees
+# Jazzy's rclpy (.venv-jazzy, --system-site-packages) and has no cyclonedds Python package.
+# A failure in either world fails the run; each world's pytest summary line is printed.
 set -euo pipefail
 
 job="${1:-}"
@@ -19,6 +25,7 @@ esac
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
+jazzy_setup="${TF_DEMO_JAZZY_SETUP:-/opt/ros/jazzy/setup.bash}"
 
 sudo_cmd=()
 if [ "$(id -u)" != 0 ]; then sudo_cmd=(sudo); fi
@@ -28,6 +35,10 @@ if [ "$job" = test ]; then
   # Oracles and peers for the tests: tf2's C++ core (python3-tf2, run by /usr/bin/python3) and
   # Cyclone DDS 0.10 (C library and idlc) for the foreign-peer interop test.
   apt_packages+=(python3-tf2 cyclonedds-dev cyclonedds-tools)
+  if [ -f "$jazzy_setup" ]; then
+    # The rosdep keys of package.xml's exec_depend and test_depend, as a ROS user installs them.
+    apt_packages+=(python3-numpy python3-yaml python3-lxml python3-pytest python3-hypothesis)
+  fi
 fi
 missing=()
 for package in "${apt_packages[@]}"; do
@@ -40,40 +51,113 @@ if [ "${#missing[@]}" -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
+pip_quiet=(-q --disable-pip-version-check)
 venv="$here/.venv"
 if [ ! -x "$venv/bin/python" ]; then
   echo "== python3 -m venv .venv"
   python3 -m venv "$venv"
 fi
 echo "== pip install -e .[dds,test] colcon-common-extensions"
-"$venv/bin/python" -m pip install -q --disable-pip-version-check --upgrade pip
-"$venv/bin/python" -m pip install -q --disable-pip-version-check -e ".[dds,test]" \
-  colcon-common-extensions
-export PATH="$venv/bin:$PATH"
-export VIRTUAL_ENV="$venv"
+"$venv/bin/python" -m pip install "${pip_quiet[@]}" --upgrade pip
+"$venv/bin/python" -m pip install "${pip_quiet[@]}" -e ".[dds,test]" colcon-common-extensions
 
 if [ "$job" = demo ]; then
+  export PATH="$venv/bin:$PATH"
+  export VIRTUAL_ENV="$venv"
   # Loopback-only discovery and a private domain keep the demo off the user's network.
   export ROS_AUTOMATIC_DISCOVERY_RANGE="${ROS_AUTOMATIC_DISCOVERY_RANGE:-LOCALHOST}"
   export ROS_DOMAIN_ID="${ROS_DOMAIN_ID:-42}"
   exec tf_demo_live --duration "${2:-20}"
 fi
 
-echo "== colcon build"
-rm -rf build/tf_demo install/tf_demo
-colcon build --event-handlers console_cohesion- --packages-select tf_demo
-echo "== colcon test"
+# pytest's closing line ("=== 12 passed, 3 skipped in 4.56s ===") from a log.
+summary_line() {
+  grep -E '^=+ .*(passed|failed|error|errors|skipped|deselected|no tests ran).* in [0-9.]+s' "$1" \
+    | tail -n 1 || true
+}
+
+logs="$(mktemp -d)"
+trap 'rm -rf "$logs"' EXIT
+
+# -- the standalone world: no ROS, the DDS backend ----------------------------------------------
+echo "== standalone world: pytest (TF_DEMO_BACKEND=dds)"
+standalone_status=0
+env -u PYTHONPATH -u AMENT_PREFIX_PATH -u RMW_IMPLEMENTATION -u ROS_DISTRO \
+  PATH="$venv/bin:$PATH" VIRTUAL_ENV="$venv" TF_DEMO_BACKEND=dds \
+  "$venv/bin/python" -m pytest test -p no:cacheprovider 2>&1 | tee "$logs/standalone.log" \
+  || standalone_status=$?  # pipefail: pytest's own exit status
+standalone_summary="$(summary_line "$logs/standalone.log")"
+# pytest exits 5 when it collects nothing: that is a failure here.
+if [ -z "$standalone_summary" ] || [ "$standalone_status" = 5 ]; then
+  standalone_status=1
+fi
+
+# -- the ROS world: colcon build + colcon test in an overlay on ROS 2 Jazzy ---------------------
+ros_status=0
+ros_summary=''
+if [ -f "$jazzy_setup" ]; then
+  jazzy_venv="$here/.venv-jazzy"
+  ws="$here/.jazzy_ws"
+  mkdir -p "$ws"
+  touch "$ws/COLCON_IGNORE"
+  if [ ! -x "$jazzy_venv/bin/python" ]; then
+    echo "== /usr/bin/python3 -m venv --system-site-packages .venv-jazzy"
+    /usr/bin/python3 -m venv --system-site-packages "$jazzy_venv"
+  fi
+  touch "$jazzy_venv/COLCON_IGNORE"
+  # The pip-only dependencies (yourdfpy, xacro) and test tools; never cyclonedds: a ROS user does
+  # not have it. numpy stays the system's, which Jazzy's message libraries were built against.
+  constraints="$logs/constraints.txt"
+  /usr/bin/python3 -c 'import numpy; print(f"numpy=={numpy.__version__}")' >"$constraints"
+  echo "== pip install (ROS world): yourdfpy xacro pytest-timeout pin ruff mypy colcon"
+  "$jazzy_venv/bin/python" -m pip install "${pip_quiet[@]}" -c "$constraints" \
+    'yourdfpy>=0.0.56' xacro pytest-timeout 'pin>=2.7' 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
+    colcon-common-extensions
+  echo "== ROS world: colcon build + colcon test on $(dirname "$jazzy_setup")"
+  (
+    set +u
+    # shellcheck disable=SC1090
+    source "$jazzy_setup"
+    set -u
+    export PATH="$jazzy_venv/bin:$PATH" VIRTUAL_ENV="$jazzy_venv"
+    export RMW_IMPLEMENTATION="${RMW_IMPLEMENTATION:-rmw_cyclonedds_cpp}"
+    export TF_DEMO_STANDALONE_PYTHON="$venv/bin/python"
+    unset TF_DEMO_BACKEND
+    cd "$ws"
+    rm -rf build/tf_demo install/tf_demo
+    colcon build --base-paths "$here" --packages-select tf_demo \
+      --event-handlers console_cohesion- >"$logs/ros_build.log" 2>&1 \
+      || { cat "$logs/ros_build.log"; exit 1; }
+    set +u
+    # shellcheck disable=SC1091
+    source install/setup.bash
+    set -u
+    status=0
+    colcon test --base-paths "$here" --packages-select tf_demo --return-code-on-test-failure \
+      --event-handlers console_direct+ --pytest-args -p no:cacheprovider || status=$?
+    colcon test-result --all --verbose || true
+    exit "$status"
+  ) 2>&1 | tee "$logs/ros.log" || ros_status=$?
+  ros_summary="$(summary_line "$logs/ros.log")"
+  if [ -z "$ros_summary" ] || grep -qE '^Summary: 0 tests' "$logs/ros.log"; then
+    ros_status=1
+  fi
+fi
+
+echo
+echo "== standalone world: ${standalone_summary:-no pytest summary (the suite did not run)}"
+if [ -f "$jazzy_setup" ]; then
+  echo "== ROS world (rclpy, $(dirname "$jazzy_setup")): ${ros_summary:-no pytest summary}"
+else
+  echo "== ROS world: not run ($jazzy_setup not found; install ROS 2 Jazzy to run it)"
+fi
 status=0
-colcon test --packages-select tf_demo --return-code-on-test-failure \
-  --event-handlers console_direct+ || status=$?
-summary="$(colcon test-result --all --verbose 2>&1 || true)"
-echo "$summary"
-# pytest exits 5 when it collects nothing; a run that executed no test is a failure here.
-if echo "$summary" | grep -qE '^Summary: 0 tests'; then
-  echo "no test was executed" >&2
+if [ "$standalone_status" != 0 ]; then
+  echo "standalone suite failed (exit $standalone_status)" >&2
   status=1
 fi
-if [ "$status" != 0 ]; then
-  echo "colcon test failed with exit status $status" >&2
+if [ "$ros_status" != 0 ]; then
+  echo "ROS-world suite failed (exit $ros_status)" >&2
+  status=1
 fi
 exit "$status"
