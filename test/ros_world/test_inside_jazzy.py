@@ -372,7 +372,7 @@ def test_ros2_topic_node_and_param_on_our_nodes(jazzy_env: dict[str, str]) -> No
 def test_standalone_and_rclpy_worlds_exchange_tf_both_ways(
     jazzy_env: dict[str, str], real_tf2: RealTf2Listener
 ) -> None:
-    """Standalone static and dynamic publishers -> rclpy world; rclpy world -> standalone tf_echo."""
+    """Standalone static and dynamic publishers -> rclpy world; rclpy -> standalone tf_echo."""
     standalone = standalone_env(jazzy_env)
     static = standalone_command(
         'nodes.static_tf_pub', '--ros-args', '-p', 'parent_frame:=st_parent'
