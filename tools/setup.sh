@@ -106,12 +106,13 @@ if [ -f "$jazzy_setup" ]; then
   fi
   touch "$jazzy_venv/COLCON_IGNORE"
   # The pip-only dependencies (yourdfpy, xacro) and test tools; never cyclonedds: a ROS user does
-  # not have it. numpy stays the system's, which Jazzy's message libraries were built against.
+  # not have it. numpy stays the system's, which Jazzy's message libraries were built against
+  # (so no pinocchio here: its wheels need numpy >= 1.26; the kinematics oracle runs standalone).
   constraints="$logs/constraints.txt"
   /usr/bin/python3 -c 'import numpy; print(f"numpy=={numpy.__version__}")' >"$constraints"
-  echo "== pip install (ROS world): yourdfpy xacro pytest-timeout pin ruff mypy colcon"
+  echo "== pip install (ROS world): yourdfpy xacro pytest-timeout ruff mypy colcon"
   "$jazzy_venv/bin/python" -m pip install "${pip_quiet[@]}" -c "$constraints" \
-    'yourdfpy>=0.0.56' xacro pytest-timeout 'pin>=2.7' 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
+    'yourdfpy>=0.0.56' xacro pytest-timeout 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
     colcon-common-extensions
   echo "== ROS world: colcon build + colcon test on $(dirname "$jazzy_setup")"
   (

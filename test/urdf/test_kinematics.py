@@ -35,7 +35,9 @@ from tf_demo.testing.urdf_strategies import robots
 from tf_demo.urdf import kdl_quaternion
 from tf_demo.urdf import RobotModel
 
-pytest.importorskip('pinocchio')
+pytest.importorskip(
+    'pinocchio', reason='pinocchio (PyPI pin), the kinematics oracle, is not installed'
+)
 
 SAMPLES = Path(__file__).resolve().parents[2] / 'urdf'
 
