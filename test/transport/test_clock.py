@@ -19,7 +19,6 @@ import threading
 from hypothesis import given
 from hypothesis import strategies as st
 import pytest
-from tf_demo.msgs import builtin_interfaces
 from tf_demo.transport.clock import Clock
 from tf_demo.transport.clock import ClockChange
 from tf_demo.transport.clock import ClockType
@@ -28,8 +27,17 @@ from tf_demo.transport.clock import Infinite
 from tf_demo.transport.clock import JumpThreshold
 from tf_demo.transport.clock import ROSClock
 from tf_demo.transport.clock import Time
+from tf_demo.transport.clock import TimeSource
+from tf_demo.transport.messages import builtin_interfaces
 
 ROS = ClockType.ROS_TIME
+
+
+def sim_time_source(clock: ROSClock) -> TimeSource:
+    """A node-less TimeSource driving ``clock``: rclpy's public way to switch ROS time on/off."""
+    source = TimeSource()
+    source.attach_clock(clock)
+    return source
 
 
 def test_time_holds_integer_nanoseconds_from_seconds_and_nanoseconds() -> None:
@@ -133,21 +141,23 @@ def test_clock_with_ros_time_type_is_a_ros_clock() -> None:
 def test_ros_clock_reports_the_override_only_while_ros_time_is_active() -> None:
     """An inactive ROS clock reads system time; active, it reads the last override."""
     clock = ROSClock()
+    source = sim_time_source(clock)
     clock.set_ros_time_override(Time(seconds=5, clock_type=ROS))
     system_now = Clock().now().nanoseconds
     assert clock.now().nanoseconds >= system_now
-    clock._set_ros_time_is_active(True)
+    source.ros_time_is_active = True
     assert clock.ros_time_is_active
     assert clock.now() == Time(seconds=5, clock_type=ROS)
     clock.set_ros_time_override(Time(seconds=7, clock_type=ROS))
     assert clock.now() == Time(seconds=7, clock_type=ROS)
-    clock._set_ros_time_is_active(False)
+    source.ros_time_is_active = False
     assert clock.now().nanoseconds >= system_now
 
 
 def test_jump_callbacks_fire_as_rcl_fires_them() -> None:
     """Activation fires on_clock_change callbacks; overrides fire past the thresholds only."""
     clock = ROSClock()
+    source = sim_time_source(clock)
     changes: list = []
     backward: list = []
     pre_calls: list = []
@@ -160,7 +170,7 @@ def test_jump_callbacks_fire_as_rcl_fires_them() -> None:
         pre_callback=lambda: pre_calls.append(clock.now().nanoseconds),
         post_callback=backward.append,
     )
-    clock._set_ros_time_is_active(True)
+    source.ros_time_is_active = True
     clock.set_ros_time_override(Time(seconds=10, clock_type=ROS))
     clock.set_ros_time_override(Time(seconds=9.5, clock_type=ROS))
     clock.set_ros_time_override(Time(seconds=8, clock_type=ROS))
@@ -170,7 +180,7 @@ def test_jump_callbacks_fire_as_rcl_fires_them() -> None:
     handle.unregister()
     clock.set_ros_time_override(Time(seconds=1, clock_type=ROS))
     assert len(backward) == 1
-    clock._set_ros_time_is_active(False)
+    source.ros_time_is_active = False
     assert changes[-1].clock_change is ClockChange.ROS_TIME_DEACTIVATED
 
 
@@ -187,7 +197,8 @@ def test_jump_threshold_validates_its_limits() -> None:
 def test_sleep_until_waits_for_sim_time_to_arrive() -> None:
     """sleep_until on an active ROS clock returns once an override reaches the target."""
     clock = ROSClock()
-    clock._set_ros_time_is_active(True)
+    source = sim_time_source(clock)
+    source.ros_time_is_active = True
     clock.set_ros_time_override(Time(seconds=1, clock_type=ROS))
     reached = threading.Event()
     result: list[bool] = []
@@ -208,13 +219,14 @@ def test_sleep_until_waits_for_sim_time_to_arrive() -> None:
 def test_sleep_until_returns_false_when_ros_time_is_deactivated() -> None:
     """Deactivating ROS time ends a sim-time sleep with False, as rclpy documents."""
     clock = ROSClock()
-    clock._set_ros_time_is_active(True)
+    source = sim_time_source(clock)
+    source.ros_time_is_active = True
     result: list[bool] = []
     thread = threading.Thread(
         target=lambda: result.append(clock.sleep_until(Time(seconds=100, clock_type=ROS)))
     )
     thread.start()
-    clock._set_ros_time_is_active(False)
+    source.ros_time_is_active = False
     thread.join(timeout=10)
     assert result == [False]
 
