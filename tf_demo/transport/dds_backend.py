@@ -20,25 +20,35 @@ clock, parameters (the node-API's :class:`~tf_demo.transport.parameters.Paramete
 and graph counts. Names are expanded and validated as rcl does (relative names get the node's
 namespace, ``~`` is the node's fully qualified name) and remapped by ``--ros-args -r``.
 
-Executors are waitset based: one thread waits on the read conditions of every subscription of
-its nodes, a guard condition, and the earliest timer deadline, then runs the callbacks in that
-same thread. Each process also publishes its nodes on ``ros_discovery_info`` so that
-``ros2 node list`` shows them.
+Executors are waitset based and schedule as rclpy's: the spinning thread waits on the read
+conditions of the subscriptions its nodes may run now, a guard condition and the earliest timer
+deadline; everything that wait found ready (node by node: timers, then subscriptions) is handed
+out, one entity per ``spin_once``, before the next wait, so an always-overdue timer cannot starve
+a subscription. :class:`SingleThreadedExecutor` runs callbacks in the spinning thread,
+:class:`MultiThreadedExecutor` in a thread pool, honouring callback groups. Each process also
+publishes its nodes on ``ros_discovery_info`` so that ``ros2 node list`` shows them.
 """
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Callable
 from collections.abc import Iterable
 from collections.abc import Sequence
+from concurrent.futures import ThreadPoolExecutor
 import contextlib
+import functools
 import inspect
 import itertools
+import os
 import re
 import threading
 import time
 from typing import Any
 from typing import cast
+from typing import Protocol
+from typing import TypeAlias
+import warnings
 import weakref
 
 from tf_demo.transport import dds_wire
@@ -462,7 +472,11 @@ def _takes_message_info(callback: Callable[..., Any]) -> bool:
 
 
 class DdsSubscription:
-    """A subscription (rclpy ``Subscription`` subset); its callback runs in the executor."""
+    """
+    A subscription (rclpy ``Subscription`` subset); its callback runs in the executor.
+
+    ``callback_group`` is the group it was created in (the node's default group unless given).
+    """
 
     def __init__(
         self,
@@ -474,11 +488,15 @@ class DdsSubscription:
         qos_profile: Any,
         reader: Any,
         raw: bool,
+        callback_group: CallbackGroup | None = None,
     ) -> None:
         self._node_ref = weakref.ref(node)
         self.msg_type = msg_type
         self.topic_name = topic
         self.callback = callback
+        self.callback_group: CallbackGroup = (
+            MutuallyExclusiveCallbackGroup() if callback_group is None else callback_group
+        )
         self.qos_profile = qos_profile
         self.raw = raw
         self._reader = reader
@@ -562,14 +580,30 @@ class DdsSubscription:
 
 
 class DdsTimer:
-    """A periodic timer (rclpy ``Timer`` subset) on the node's clock."""
+    """
+    A periodic timer (rclpy ``Timer`` subset) on the node's clock.
+
+    ``callback_group`` is the group it was created in (the node's default group unless given).
+    Its state is guarded by a lock: a pool thread marks it called while the spinning thread
+    asks whether it is ready.
+    """
 
     def __init__(
-        self, callback: Callable[[], Any], period_ns: int, clock: Clock, *, autostart: bool = True
+        self,
+        callback: Callable[[], Any],
+        period_ns: int,
+        clock: Clock,
+        *,
+        autostart: bool = True,
+        callback_group: CallbackGroup | None = None,
     ) -> None:
         self.callback = callback
         self.timer_period_ns = period_ns
         self.clock = clock
+        self.callback_group: CallbackGroup = (
+            MutuallyExclusiveCallbackGroup() if callback_group is None else callback_group
+        )
+        self._lock = threading.RLock()
         self._canceled = not autostart
         self._next_call_ns = int(clock.now().nanoseconds) + period_ns
         self._last_call_ns: int | None = None
@@ -577,10 +611,11 @@ class DdsTimer:
 
     def _now_ns(self) -> int:
         now = int(self.clock.now().nanoseconds)
-        if now < self._next_call_ns - self.timer_period_ns:
-            # The clock jumped backwards (e.g. a bag replayed on /clock from the start):
-            # restart the period from the new time instead of waiting for the old deadline.
-            self._next_call_ns = now + self.timer_period_ns
+        with self._lock:
+            if now < self._next_call_ns - self.timer_period_ns:
+                # The clock jumped backwards (e.g. a bag replayed on /clock from the start):
+                # restart the period from the new time instead of waiting for the old deadline.
+                self._next_call_ns = now + self.timer_period_ns
         return now
 
     def cancel(self) -> None:
@@ -593,37 +628,42 @@ class DdsTimer:
 
     def reset(self) -> None:
         """Restart the period from now (and un-cancel)."""
-        self._canceled = False
-        self._next_call_ns = self._now_ns() + self.timer_period_ns
+        with self._lock:
+            self._canceled = False
+            self._next_call_ns = self._now_ns() + self.timer_period_ns
         if self._wake is not None:
             self._wake()
 
     def is_ready(self) -> bool:
         """Return whether the timer is due."""
-        return not self._canceled and self._now_ns() >= self._next_call_ns
+        with self._lock:
+            return not self._canceled and self._now_ns() >= self._next_call_ns
 
     def time_until_next_call(self) -> int | None:
         """Return nanoseconds until the next call (None when canceled)."""
-        if self._canceled:
-            return None
-        return max(0, self._next_call_ns - self._now_ns())
+        with self._lock:
+            if self._canceled:
+                return None
+            return max(0, self._next_call_ns - self._now_ns())
 
     def time_since_last_call(self) -> int:
         """Return nanoseconds since the last call (or since creation)."""
-        last = self._last_call_ns
-        reference = last if last is not None else self._next_call_ns - self.timer_period_ns
-        return self._now_ns() - reference
+        with self._lock:
+            last = self._last_call_ns
+            reference = last if last is not None else self._next_call_ns - self.timer_period_ns
+            return self._now_ns() - reference
 
     def _mark_called(self) -> None:
-        now = self._now_ns()
-        self._last_call_ns = now
-        self._next_call_ns += self.timer_period_ns
-        if self.timer_period_ns == 0:
-            self._next_call_ns = now
-        elif self._next_call_ns <= now:
-            # Fell behind (or the clock jumped): skip missed periods, as rcl does.
-            missed = (now - self._next_call_ns) // self.timer_period_ns + 1
-            self._next_call_ns += missed * self.timer_period_ns
+        with self._lock:
+            now = self._now_ns()
+            self._last_call_ns = now
+            self._next_call_ns += self.timer_period_ns
+            if self.timer_period_ns == 0:
+                self._next_call_ns = now
+            elif self._next_call_ns <= now:
+                # Fell behind (or the clock jumped): skip missed periods, as rcl does.
+                missed = (now - self._next_call_ns) // self.timer_period_ns + 1
+                self._next_call_ns += missed * self.timer_period_ns
 
     def destroy(self) -> None:
         """Cancel the timer for good."""
@@ -643,19 +683,91 @@ def _refuse_unsupported(event_callbacks: object, qos_overriding_options: object)
 
 class CallbackGroup:
     """
-    rclpy's callback group, accepted for compatibility.
+    rclpy's callback group: decides when the callbacks of its entities may run.
 
-    The DDS executors run every callback in the spinning thread, one at a time, which satisfies
-    both group kinds.
+    Entities (subscriptions, timers) are added with :meth:`add_entity` when they are created;
+    an executor asks :meth:`can_execute` before handing an entity out, takes permission with
+    :meth:`beginning_execution` and returns it with :meth:`ending_execution`. Subclasses
+    implement those three, as in rclpy.
     """
 
+    def __init__(self) -> None:
+        self.entities: set[weakref.ref[Any]] = set()
 
-class MutuallyExclusiveCallbackGroup(CallbackGroup):
-    """Callbacks of the group never run concurrently (always true here)."""
+    def add_entity(self, entity: Any) -> None:
+        """Add ``entity`` (a subscription or timer) to the group."""
+        self.entities.add(weakref.ref(entity))
+
+    def has_entity(self, entity: Any) -> bool:
+        """Return whether ``entity`` was added to the group."""
+        return weakref.ref(entity) in self.entities
+
+    def can_execute(self, entity: Any) -> bool:
+        """Return whether a callback of ``entity`` may start now."""
+        raise NotImplementedError
+
+    def beginning_execution(self, entity: Any) -> bool:
+        """Ask to start a callback of ``entity``; True obliges to call :meth:`ending_execution`."""
+        raise NotImplementedError
+
+    def ending_execution(self, entity: Any) -> None:
+        """Tell the group that a callback of ``entity`` finished."""
+        raise NotImplementedError
 
 
 class ReentrantCallbackGroup(CallbackGroup):
-    """Callbacks of the group may run concurrently (they run one at a time here)."""
+    """Callbacks of the group may run concurrently, even the same entity's."""
+
+    def can_execute(self, entity: Any) -> bool:
+        """Return True: the group never holds a callback back."""
+        del entity
+        return True
+
+    def beginning_execution(self, entity: Any) -> bool:
+        """Return True: permission is always given."""
+        del entity
+        return True
+
+    def ending_execution(self, entity: Any) -> None:
+        """Nothing to release."""
+        del entity
+
+
+class MutuallyExclusiveCallbackGroup(CallbackGroup):
+    """At most one callback of the group runs at a time (a node's default group is one)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._active_entity: Any = None
+        self._lock = threading.Lock()
+
+    def _check_member(self, entity: Any) -> None:
+        if not self.has_entity(entity):
+            msg = f'{entity!r} is not an entity of this callback group'
+            raise AssertionError(msg)
+
+    def can_execute(self, entity: Any) -> bool:
+        """Return whether no callback of the group is running."""
+        with self._lock:
+            self._check_member(entity)
+            return self._active_entity is None
+
+    def beginning_execution(self, entity: Any) -> bool:
+        """Take the group for ``entity`` unless a callback of the group is running."""
+        with self._lock:
+            self._check_member(entity)
+            if self._active_entity is None:
+                self._active_entity = entity
+                return True
+        return False
+
+    def ending_execution(self, entity: Any) -> None:
+        """Release the group taken for ``entity``."""
+        with self._lock:
+            if self._active_entity is not entity:
+                msg = f'{entity!r} is not the entity running in this callback group'
+                raise AssertionError(msg)
+            self._active_entity = None
 
 
 # --------------------------------------------------------------------------------------------
@@ -736,6 +848,7 @@ class DdsNode:
         self._subscriptions: list[DdsSubscription] = []
         self._timers: list[DdsTimer] = []
         self._executors: weakref.WeakSet[DdsExecutor] = weakref.WeakSet()
+        self._default_callback_group: CallbackGroup = MutuallyExclusiveCallbackGroup()
         self._clock = ROSClock()
         self._participant = _participant()
         with _context.lock:
@@ -770,6 +883,11 @@ class DdsNode:
     def get_clock(self) -> Clock:
         """Return the node's ROS clock (``/clock`` when ``use_sim_time`` is true)."""
         return self._clock
+
+    @property
+    def default_callback_group(self) -> CallbackGroup:
+        """The mutually exclusive group of entities created without a ``callback_group``."""
+        return self._default_callback_group
 
     # -- names -----------------------------------------------------------------------------
 
@@ -941,7 +1059,7 @@ class DdsNode:
         callback: Callable[[Any], Any],
         qos_profile: Any,
         *,
-        callback_group: object = None,
+        callback_group: CallbackGroup | None = None,
         event_callbacks: object = None,
         qos_overriding_options: object = None,
         raw: bool = False,
@@ -950,19 +1068,28 @@ class DdsNode:
         Create a subscription; ``callback(msg)`` runs in the executor that spins the node.
 
         ``callback(msg, message_info)`` when it binds two arguments but not one (rclpy's rule).
+        The subscription joins ``callback_group`` (default: :attr:`default_callback_group`).
 
         :raises RuntimeError: for a callback that binds neither one nor two arguments.
         :raises NotImplementedError: for ``event_callbacks`` or ``qos_overriding_options``.
         """
-        del callback_group
+        group = callback_group or self._default_callback_group
         _refuse_unsupported(event_callbacks, qos_overriding_options)
         _takes_message_info(callback)
         reader, full_topic, profile = self._open_endpoint(
             msg_type, topic, qos_profile, publisher=False
         )
         subscription = DdsSubscription(
-            self, msg_type, full_topic, callback, qos_profile=profile, reader=reader, raw=raw
+            self,
+            msg_type,
+            full_topic,
+            callback,
+            qos_profile=profile,
+            reader=reader,
+            raw=raw,
+            callback_group=group,
         )
+        group.add_entity(subscription)
         with self._lock:
             self._subscriptions.append(subscription)
         self._wake_executors()
@@ -973,7 +1100,7 @@ class DdsNode:
         self,
         timer_period_sec: float,
         callback: Callable[[], Any],
-        callback_group: object = None,
+        callback_group: CallbackGroup | None = None,
         clock: Clock | None = None,
         autostart: bool = True,
     ) -> DdsTimer:
@@ -981,15 +1108,23 @@ class DdsNode:
         Create a timer calling ``callback()`` every ``timer_period_sec`` seconds.
 
         The period is truncated to whole nanoseconds, as rclpy does; with ``autostart=False``
-        the timer starts canceled until :meth:`DdsTimer.reset`.
+        the timer starts canceled until :meth:`DdsTimer.reset`. The timer joins
+        ``callback_group`` (default: :attr:`default_callback_group`).
         """
-        del callback_group
         self._check_alive()
         period_ns = int(float(timer_period_sec) * 1e9)
         if period_ns < 0:
             msg = f'timer period must be non-negative, got {timer_period_sec!r}'
             raise ValueError(msg)
-        timer = DdsTimer(callback, period_ns, clock or self._clock, autostart=autostart)
+        group = self._default_callback_group if callback_group is None else callback_group
+        timer = DdsTimer(
+            callback,
+            period_ns,
+            clock or self._clock,
+            autostart=autostart,
+            callback_group=group,
+        )
+        group.add_entity(timer)
         timer._wake = self._wake_executors
         with self._lock:
             self._timers.append(timer)
@@ -1136,6 +1271,11 @@ class DdsTask:
         self._result: Any = None
         self._exception: BaseException | None = None
         self._done_callbacks: list[Callable[[DdsTask], Any]] = []
+        self._executing = False
+
+    def executing(self) -> bool:
+        """Return whether a step of the task is running (or queued in a thread pool)."""
+        return self._executing
 
     def done(self) -> bool:
         """Return whether the task finished (returned, raised or was cancelled)."""
@@ -1202,15 +1342,56 @@ _TASK_POLL_NS = 5_000_000
 _SIM_TIME_MAX_WAIT_NS = 10_000_000
 
 
+class _ReaderEntity(Protocol):
+    """
+    What the executor needs of an entity served from a read condition.
+
+    Subscriptions, and service servers and clients (``dds_services``), which the executors
+    serve alike: wait on ``read_condition``, ``take_messages()``, then ``callback`` per item.
+    """
+
+    callback_group: CallbackGroup
+
+    @property
+    def read_condition(self) -> int: ...
+
+    @property
+    def callback(self) -> Callable[..., Any]: ...
+
+    def take_messages(self) -> list[tuple[Any, dict[str, Any] | None]]: ...
+
+
+_Entity: TypeAlias = 'DdsTimer | _ReaderEntity'
+_Call: TypeAlias = 'tuple[Callable[..., Any], tuple[Any, ...]]'
+
+
+def _reader_entities(node: DdsNode) -> list[_ReaderEntity]:
+    """Return the node's read-condition entities: subscriptions, clients, services (rclpy)."""
+    return [
+        *node.subscriptions,
+        *getattr(node, 'clients', ()),
+        *getattr(node, 'services', ()),
+    ]
+
+
 class DdsExecutor:
     """
-    Runs the callbacks of any number of nodes in the thread that spins it.
+    Runs the callbacks of any number of nodes, scheduled as rclpy's ``Executor`` does.
 
-    Each :meth:`spin_once` waits on a Cyclone waitset holding the read condition of every
-    subscription, a guard condition (woken when entities change or on shutdown) and a timeout
-    at the earliest timer deadline; then it runs due timers and the callbacks of every
-    subscription with data, in that thread.
+    A wait is on a Cyclone waitset holding the read condition of every subscription that may
+    run now (not handed out already, and its callback group allows it), a guard condition (woken
+    when entities change, on shutdown and when a pooled callback ends) and a timeout at the
+    earliest deadline of such a timer. What the wait found ready is queued node by node, timers
+    first, then subscriptions; :meth:`spin_once` hands out one queued entity per call and waits
+    again only once the queue is empty (rclpy's persisted generator), so every entity that was
+    ready is served before a timer that is overdue again runs a second time. A subscription
+    handed out takes up to 256 waiting samples and runs its callback on each. Where callbacks
+    run is the subclass' choice (:meth:`_execute`); ``async def`` callbacks become tasks that
+    later spins resume.
     """
+
+    _pooled = False
+    """Whether callbacks run in other threads (which then wake the waitset)."""
 
     def __init__(self, *, context: object = None) -> None:
         del context
@@ -1218,12 +1399,23 @@ class DdsExecutor:
         self._lock = threading.RLock()
         self._waitset_participant = _participant()
         self._waitset = dds_wire.WaitSet(self._waitset_participant)
-        self._attached: dict[int, DdsSubscription] = {}
+        self._attached: dict[int, _ReaderEntity] = {}
         self._shutdown = False
         self._tasks: list[DdsTask] = []
         self._tasks_lock = threading.Lock()
+        self._ready: deque[tuple[DdsNode, _Entity]] = deque()
+        """Entities found ready by the last wait and not handed out yet."""
+        self._handed_out: set[_Entity] = set()
+        """Entities handed out whose data is not taken yet: not waited on (rclpy's flag)."""
+        self._handed_out_lock = threading.Lock()
         with _context.lock:
             _context.executors.add(self)
+
+    def __enter__(self) -> DdsExecutor:
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        self.shutdown()
 
     def add_node(self, node: DdsNode) -> bool:
         """Add ``node``; returns False when it was already added."""
@@ -1252,7 +1444,16 @@ class DdsExecutor:
         """Interrupt a wait so that entity changes or shutdown are seen at once."""
         self._waitset.wake()
 
-    def _refresh_conditions(self) -> dict[int, DdsSubscription]:
+    def can_execute(self, entity: _Entity) -> bool:
+        """Return whether ``entity`` may be waited on and handed out now (rclpy's rule)."""
+        with self._handed_out_lock:
+            if entity in self._handed_out:
+                return False
+        return bool(entity.callback_group.can_execute(entity))
+
+    # -- waiting ---------------------------------------------------------------------------
+
+    def _refresh_conditions(self) -> dict[int, _ReaderEntity]:
         participant = _participant()
         if participant is not self._waitset_participant:
             # The world was shut down and initialised again: the old waitset died with the old
@@ -1260,10 +1461,11 @@ class DdsExecutor:
             self._waitset_participant = participant
             self._waitset = dds_wire.WaitSet(participant)
             self._attached = {}
-        wanted: dict[int, DdsSubscription] = {}
+        wanted: dict[int, _ReaderEntity] = {}
         for node in self.get_nodes():
-            for subscription in node.subscriptions:
-                wanted[subscription.read_condition] = subscription
+            for entity in _reader_entities(node):
+                if self.can_execute(entity):
+                    wanted[entity.read_condition] = entity
         for condition in set(self._attached) - set(wanted):
             self._waitset.detach(condition)
         for condition in set(wanted) - set(self._attached):
@@ -1271,29 +1473,103 @@ class DdsExecutor:
         self._attached = wanted
         return wanted
 
-    def _timers(self) -> list[tuple[DdsNode, DdsTimer]]:
-        return [(node, timer) for node in self.get_nodes() for timer in node.timers]
-
     def _wait_timeout_ns(self, timeout_sec: float | None) -> int:
-        limit = _IDLE_WAIT_NS if timeout_sec is None or timeout_sec < 0 else int(timeout_sec * 1e9)
-        for _node, timer in self._timers():
-            remaining = timer.time_until_next_call()
-            if remaining is None:
-                continue
-            if isinstance(timer.clock, ROSClock) and timer.clock.ros_time_is_active:
-                remaining = min(remaining, _SIM_TIME_MAX_WAIT_NS)
-            limit = min(limit, remaining)
+        limit = _IDLE_WAIT_NS if timeout_sec is None else int(timeout_sec * 1e9)
+        for node in self.get_nodes():
+            for timer in node.timers:
+                if not self.can_execute(timer):
+                    continue
+                remaining = timer.time_until_next_call()
+                if remaining is None:
+                    continue
+                if isinstance(timer.clock, ROSClock) and timer.clock.ros_time_is_active:
+                    remaining = min(remaining, _SIM_TIME_MAX_WAIT_NS)
+                limit = min(limit, remaining)
         return max(0, limit)
 
-    def _run_ready_timers(self) -> bool:
-        ran = False
-        for node, timer in self._timers():
-            if node._destroyed or not timer.is_ready():
+    def _collect_ready(self, triggered: list[int], conditions: dict[int, _ReaderEntity]) -> None:
+        """Queue what the wait found ready: node by node, due timers, then subscriptions (...)."""
+        with_data = {id(conditions[c]) for c in triggered if c in conditions}
+        for node in self.get_nodes():
+            if node._destroyed:
                 continue
-            timer._mark_called()
-            ran = True
-            self._run_callback(timer.callback)
-        return ran
+            self._ready.extend(
+                (node, timer)
+                for timer in node.timers
+                if timer.is_ready() and self.can_execute(timer)
+            )
+            self._ready.extend(
+                (node, entity)
+                for entity in _reader_entities(node)
+                if id(entity) in with_data and self.can_execute(entity)
+            )
+
+    # -- handing out and running -----------------------------------------------------------
+
+    def _dispatch_next(self) -> bool:
+        """Hand out the next queued entity its group lets run; False when none is left."""
+        while True:
+            try:
+                node, entity = self._ready.popleft()
+            except IndexError:
+                return False
+            with self._lock:
+                present = node in self._nodes
+            if not present or node._destroyed or not self.can_execute(entity):
+                # Considered again by the next wait (its data or deadline is still there).
+                continue
+            with self._handed_out_lock:
+                self._handed_out.add(entity)
+            self._execute(functools.partial(self._serve, node, entity))
+            return True
+
+    def _execute(self, job: Callable[[], None]) -> None:
+        """Run ``job`` (a handed-out entity or a task step): here, in the spinning thread."""
+        job()
+
+    def _serve(self, node: DdsNode, entity: _Entity) -> None:
+        """With the group's permission take the entity's data and run its callback(s)."""
+        group = entity.callback_group
+        if self._shutdown or not group.beginning_execution(entity):
+            # Not now: the entity is waited on again and runs once its group is free.
+            self._taken(entity)
+            return
+        try:
+            try:
+                calls = self._take(node, entity)
+            finally:
+                self._taken(entity)
+            for callback, args in calls:
+                self._run_callback(callback, *args)
+        finally:
+            group.ending_execution(entity)
+
+    def _taken(self, entity: _Entity) -> None:
+        """Let the entity be waited on again: its data is taken (or left for later)."""
+        with self._handed_out_lock:
+            self._handed_out.discard(entity)
+        if self._pooled:
+            self.wake()
+
+    def _take(self, node: DdsNode, entity: _Entity) -> list[_Call]:
+        """Mark a timer called, or take a reader entity's samples; the calls to make."""
+        if node._destroyed:
+            return []
+        if isinstance(entity, DdsTimer):
+            if entity not in node._timers or entity.is_canceled():
+                return []
+            entity._mark_called()
+            return [(entity.callback, ())]
+        if entity not in _reader_entities(node):
+            return []
+        try:
+            items = entity.take_messages()
+        except dds_wire.DdsWireError:
+            if entity in _reader_entities(node):
+                raise
+            return []  # destroyed while its samples were being taken
+        callback = entity.callback
+        return [(callback, (msg,) if info is None else (msg, info)) for msg, info in items]
 
     def _run_callback(self, callback: Callable[..., Any], *args: Any) -> None:
         # As in rclpy, an exception raised by user code propagates out of spin(), and an
@@ -1301,9 +1577,19 @@ class DdsExecutor:
         outcome = callback(*args)
         if inspect.iscoroutine(outcome):
             task = DdsTask(outcome)
-            with self._tasks_lock:
-                self._tasks.append(task)
-            self._step_task(task)
+            task.step()
+            if not task.done():
+                with self._tasks_lock:
+                    self._tasks.append(task)
+                return
+            error = task.exception()
+            if error is not None:
+                raise error
+
+    def _raise_pending_error(self) -> None:
+        """Re-raise an exception a callback raised in another thread (none here)."""
+
+    # -- tasks -----------------------------------------------------------------------------
 
     def create_task(self, callback: Any, *args: Any) -> DdsTask:
         """Run a coroutine (or ``callback(*args)``) in this executor; returns its task."""
@@ -1313,43 +1599,58 @@ class DdsExecutor:
         self.wake()
         return task
 
-    def _step_task(self, task: DdsTask) -> bool:
-        task.step()
+    def _step_task(self, task: DdsTask) -> None:
+        try:
+            task.step()
+        finally:
+            task._executing = False
         if not task.done():
-            return False
+            return
         with self._tasks_lock:
             if task in self._tasks:
                 self._tasks.remove(task)
         error = task.exception()
         if error is not None:
             raise error
-        return True
 
     def _resume_tasks(self) -> bool:
-        """Step every pending task once; return whether any finished."""
+        """Step every pending task not already being stepped; return whether any finished."""
         with self._tasks_lock:
             pending = list(self._tasks)
         finished = False
         for task in pending:
-            finished = self._step_task(task) or finished
+            with self._tasks_lock:
+                if task._executing:
+                    continue
+                task._executing = True
+            self._execute(functools.partial(self._step_task, task))
+            finished = task.done() or finished
         return finished
+
+    # -- spinning --------------------------------------------------------------------------
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         """
-        Wait up to ``timeout_sec`` (None: until something happens) and run what is ready.
+        Hand out one ready entity, waiting up to ``timeout_sec`` (None or negative: no limit).
 
-        Unlike rclpy, which runs one callback per call, every due timer and every waiting
-        sample (up to 256 per subscription) is handled, so a busy topic is drained in one call.
+        Entities found ready by the last wait are handed out first, one per call; a new wait
+        happens only when none is left. A handed-out subscription drains up to 256 samples.
+        Returns also when a task finished, or at the timeout.
         """
         if not _context.ok() or self._shutdown:
             return
-        deadline = None if timeout_sec is None else time.monotonic() + max(0.0, timeout_sec)
+        self._raise_pending_error()
+        deadline = (
+            None if timeout_sec is None or timeout_sec < 0 else time.monotonic() + timeout_sec
+        )
         while True:
-            conditions = self._refresh_conditions()
-            tasks_finished = self._resume_tasks()
-            if self._run_ready_timers() or tasks_finished:
+            if self._dispatch_next():
+                self._raise_pending_error()
                 return
-            remaining = None if deadline is None else deadline - time.monotonic()
+            if self._resume_tasks():
+                return
+            conditions = self._refresh_conditions()
+            remaining = None if deadline is None else max(0.0, deadline - time.monotonic())
             wait_ns = self._wait_timeout_ns(remaining)
             if self._tasks:
                 # A pending task may be waiting for something another thread completes.
@@ -1357,21 +1658,9 @@ class DdsExecutor:
             triggered = self._waitset.wait(wait_ns)
             if not _context.ok() or self._shutdown:
                 return
-            ran = self._run_ready_timers()
-            for condition in triggered:
-                subscription = conditions.get(condition)
-                if subscription is None:
-                    continue
-                node = subscription._node_ref()
-                if node is None or node._destroyed:
-                    continue
-                for message, info in subscription.take_messages():
-                    if info is None:
-                        self._run_callback(subscription.callback, message)
-                    else:
-                        self._run_callback(subscription.callback, message, info)
-                ran = True
-            if ran or (deadline is not None and time.monotonic() >= deadline):
+            self._raise_pending_error()
+            self._collect_ready(triggered, conditions)
+            if not self._ready and deadline is not None and time.monotonic() >= deadline:
                 return
 
     def spin(self) -> None:
@@ -1389,12 +1678,24 @@ class DdsExecutor:
             self.spin_once(0.1 if remaining is None else min(0.1, remaining))
 
     def shutdown(self, timeout_sec: float | None = None) -> bool:
-        """Stop spinning and release the waitset."""
-        del timeout_sec
+        """
+        Stop spinning, wait for running callbacks and drop the nodes.
+
+        :param timeout_sec: longest wait for running callbacks (None or negative: no limit).
+        :return: False when callbacks were still running at the timeout (nodes are kept).
+        """
         self._shutdown = True
         self.wake()
+        if not self._wait_for_callbacks(timeout_sec):
+            return False
         for node in self.get_nodes():
             self.remove_node(node)
+        self._ready.clear()
+        return True
+
+    def _wait_for_callbacks(self, timeout_sec: float | None) -> bool:
+        """Wait for callbacks running in other threads (none here)."""
+        del timeout_sec
         return True
 
 
@@ -1402,17 +1703,90 @@ class SingleThreadedExecutor(DdsExecutor):
     """rclpy's ``SingleThreadedExecutor``: every callback runs in the spinning thread."""
 
 
+def _default_thread_count() -> int:
+    """Return rclpy's default pool size: the CPUs this process may use, else the count, or 2."""
+    if hasattr(os, 'sched_getaffinity'):
+        return len(os.sched_getaffinity(0)) or 2
+    return os.cpu_count() or 2
+
+
 class MultiThreadedExecutor(DdsExecutor):
     """
-    Accepts rclpy's ``MultiThreadedExecutor`` arguments; callbacks still run one at a time.
+    rclpy's ``MultiThreadedExecutor``: callbacks run in a pool of ``num_threads`` threads.
 
-    Serialising callbacks is a valid schedule for rclpy's default mutually exclusive callback
-    groups, which is all tf_demo uses.
+    The spinning thread waits and hands entities out; a pool thread then asks the entity's
+    callback group for permission (a mutually exclusive group runs one callback at a time, a
+    reentrant one any number, even several of the same entity), takes the data, runs the
+    callback and wakes the waitset, so an entity its group held back is considered again. An
+    exception raised by a callback is re-raised in the spinning thread by the next
+    :meth:`spin_once`. :meth:`shutdown` waits for running callbacks, then stops the pool.
+
+    :param num_threads: pool size; None: the CPUs this process may use (as rclpy).
     """
 
+    _pooled = True
+
     def __init__(self, num_threads: int | None = None, *, context: object = None) -> None:
-        del num_threads
+        if num_threads is None:
+            num_threads = _default_thread_count()
+        self._pool = ThreadPoolExecutor(num_threads)  # worker names: 'ThreadPoolExecutor-...'
         super().__init__(context=context)
+        if num_threads == 1:
+            warnings.warn(
+                'MultiThreadedExecutor is used with a single thread.\n'
+                'Use the SingleThreadedExecutor instead.',
+                stacklevel=2,
+            )
+        self._errors: deque[BaseException] = deque()
+        self._work = threading.Condition()
+        self._outstanding = 0
+        """Jobs submitted to the pool and not finished."""
+        self._job_thread = threading.local()
+
+    def _execute(self, job: Callable[[], None]) -> None:
+        """Run ``job`` in the pool."""
+        with self._work:
+            self._outstanding += 1
+        try:
+            self._pool.submit(self._run_job, job)
+        except RuntimeError:  # the pool was stopped by a concurrent shutdown()
+            self._job_finished()
+            if not self._shutdown:
+                raise
+
+    def _run_job(self, job: Callable[[], None]) -> None:
+        self._job_thread.active = True
+        try:
+            job()
+        except BaseException as error:  # re-raised in the spinning thread by spin_once
+            self._errors.append(error)
+        finally:
+            self._job_thread.active = False
+            self._job_finished()
+            self.wake()
+
+    def _job_finished(self) -> None:
+        with self._work:
+            self._outstanding -= 1
+            self._work.notify_all()
+
+    def _raise_pending_error(self) -> None:
+        """Re-raise the oldest exception a pooled callback raised."""
+        try:
+            error = self._errors.popleft()
+        except IndexError:
+            return
+        raise error
+
+    def _wait_for_callbacks(self, timeout_sec: float | None) -> bool:
+        """Wait for the pool's jobs (not the calling one, from a callback) and stop the pool."""
+        own = 1 if getattr(self._job_thread, 'active', False) else 0
+        limit = None if timeout_sec is None or timeout_sec < 0 else timeout_sec
+        with self._work:
+            if not self._work.wait_for(lambda: self._outstanding <= own, limit):
+                return False
+        self._pool.shutdown(wait=not own)
+        return True
 
 
 _default_executors: dict[int, DdsExecutor] = {}
