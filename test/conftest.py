@@ -72,6 +72,29 @@ def _exclusive_domain() -> Iterator[int]:
 
 
 HAVE_CYCLONEDDS = importlib.util.find_spec('cyclonedds') is not None
+STANDALONE_ONLY = (
+    'standalone world only: needs the cyclonedds Python package (pip install tf_demo[dds])'
+)
+"""Reason for ``pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)`` in test modules."""
+
+# The import shims of test/upstream are packages named tf2_ros and tf2_geometry_msgs: never
+# collect (import) them as tests.
+collect_ignore = ['upstream/shims']
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_pycollect_makemodule(
+    module_path: Path, parent: pytest.Collector
+) -> pytest.Module | None:
+    """Collect test modules as plain pytest does, before launch_testing's plugin can.
+
+    Inside ROS 2, launch_testing's pytest plugin imports every test module itself to look for
+    launch tests; a module-level skip (``importorskip``) raised there ends the whole collection.
+    This suite has no launch tests, so its modules are collected by pytest's own ``Module``.
+    """
+    if module_path.name == '__init__.py':
+        return None
+    return pytest.Module.from_parent(parent, path=module_path)
 
 
 def _world() -> str:

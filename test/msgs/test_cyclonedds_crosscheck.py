@@ -19,6 +19,11 @@ No ``from __future__ import annotations`` here: cyclonedds reads the annotations
 
 from typing import Any
 
+from conftest import STANDALONE_ONLY
+import pytest
+
+pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)
+
 from cyclonedds_reference_types import Header_
 from cyclonedds_reference_types import JointState_
 from cyclonedds_reference_types import Quaternion_
@@ -30,7 +35,6 @@ from cyclonedds_reference_types import Vector3_
 from hypothesis import given
 from hypothesis import settings
 from msgs_strategies import message_strategy
-import pytest
 from tf_demo.msgs import cdr
 from tf_demo.msgs.sensor_msgs import JointState
 from tf_demo.msgs.tf2_msgs import TFMessage

@@ -20,7 +20,11 @@ from collections.abc import Callable
 from collections.abc import Iterator
 import time
 
+from conftest import STANDALONE_ONLY
 import pytest
+
+pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)
+
 from tf_demo.msgs import builtin_interfaces
 from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import rosgraph_msgs

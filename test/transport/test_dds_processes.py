@@ -21,8 +21,12 @@ from pathlib import Path
 import sys
 import time
 
-from conftest import ChildProcess
+from conftest import STANDALONE_ONLY
 import pytest
+
+pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)
+
+from conftest import ChildProcess
 from tf_demo.msgs import cdr
 from tf_demo.msgs import rmw_dds_common
 from tf_demo.transport import dds_wire

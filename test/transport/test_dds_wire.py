@@ -19,11 +19,15 @@ from __future__ import annotations
 from collections.abc import Iterator
 import time
 
+from conftest import STANDALONE_ONLY
+import pytest
+
+pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)
+
 from cyclonedds.builtin import BuiltinDataReader
 from cyclonedds.builtin import BuiltinTopicDcpsPublication
 from cyclonedds.builtin import BuiltinTopicDcpsSubscription
 from cyclonedds.qos import Policy
-import pytest
 from tf_demo.msgs import cdr
 from tf_demo.msgs import tf2_msgs
 from tf_demo.transport import dds_wire
