@@ -40,6 +40,8 @@ def _element(field: FieldSpec) -> st.SearchStrategy[Any]:
         return TEXT
     if field.base == 'bool':
         return st.booleans()
+    if field.base == 'byte':
+        return st.binary(min_size=1, max_size=1)
     if field.base == 'float64':
         return st.floats(allow_nan=False)
     if field.base == 'float32':
@@ -62,7 +64,7 @@ def _field(field: FieldSpec) -> st.SearchStrategy[Any]:
         if prim is not None and prim.numpy_dtype:
             return values.map(lambda items: numpy.array(items, dtype=prim.numpy_dtype))
         return values
-    return st.lists(element, max_size=4)
+    return st.lists(element, max_size=min(4, field.size) if field.size else 4)
 
 
 def message_strategy(msgtype: str) -> st.SearchStrategy[Any]:

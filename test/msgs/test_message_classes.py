@@ -26,9 +26,11 @@ from tf_demo.msgs import builtin_interfaces
 from tf_demo.msgs import cdr
 from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import nav_msgs
+from tf_demo.msgs import rcl_interfaces
 from tf_demo.msgs import rmw_dds_common
 from tf_demo.msgs import rosgraph_msgs
 from tf_demo.msgs import sensor_msgs
+from tf_demo.msgs import service_msgs
 from tf_demo.msgs import std_msgs
 from tf_demo.msgs import tf2_msgs
 from tf_demo.msgs._message import blank_instance_maker
@@ -49,12 +51,18 @@ REQUIRED = {
     'tf2_msgs': ['TFMessage'],
     'rosgraph_msgs': ['Clock'],
     'rmw_dds_common': ['Gid', 'NodeEntitiesInfo', 'ParticipantEntitiesInfo'],
+    'service_msgs': ['ServiceEventInfo'],
+    'rcl_interfaces': [
+        'ParameterType', 'ParameterValue', 'Parameter', 'FloatingPointRange', 'IntegerRange',
+        'ParameterDescriptor', 'SetParametersResult', 'ListParametersResult', 'ParameterEvent',
+        'Log',
+    ],
 }  # fmt: skip
 MODULES = {
     module.__name__.rsplit('.', 1)[1]: module
     for module in (
         builtin_interfaces, std_msgs, geometry_msgs, nav_msgs, sensor_msgs, tf2_msgs,
-        rosgraph_msgs, rmw_dds_common,
+        rosgraph_msgs, rmw_dds_common, service_msgs, rcl_interfaces,
     )
 }  # fmt: skip
 

@@ -314,15 +314,24 @@ def test_ros_discovery_info_follows_entity_and_node_changes(world):
             for n in latest[-1].node_entities_info_seq
         }
 
+    # Every node has rclpy's built-ins: the six parameter services (request readers, reply
+    # writers) and the /parameter_events and /rosout writers.
+    builtin_readers, builtin_writers = 6, 8
     keeper = dds_backend.DdsNode('keeper')
     node = dds_backend.DdsNode('changing')
     publisher = node.create_publisher(std_msgs.String, 'chatter', 10)
-    assert nodes_now() == {'keeper': (0, 0), 'changing': (0, 1)}
+    assert nodes_now() == {
+        'keeper': (builtin_readers, builtin_writers),
+        'changing': (builtin_readers, builtin_writers + 1),
+    }
     assert bytes(latest[-1].gid.data) == participant.guid
     node.destroy_publisher(publisher)
-    assert nodes_now() == {'keeper': (0, 0), 'changing': (0, 0)}
+    assert nodes_now() == {
+        'keeper': (builtin_readers, builtin_writers),
+        'changing': (builtin_readers, builtin_writers),
+    }
     node.destroy_node()
-    assert nodes_now() == {'keeper': (0, 0)}
+    assert nodes_now() == {'keeper': (builtin_readers, builtin_writers)}
     del keeper
 
 

@@ -202,8 +202,10 @@ def test_ros_discovery_info_names_the_node_and_its_endpoints(dds_env, peers, wir
     (node,) = with_probe[-1].node_entities_info_seq
     info = with_probe[-1]
     assert (node.node_namespace, node.node_name) == ('/', 'graph_probe')
-    assert len(node.writer_gid_seq) == 1
-    assert node.reader_gid_seq == []
+    # Its publisher, then rclpy's built-ins: six parameter services (request readers, reply
+    # writers), the /parameter_events and /rosout writers.
+    assert len(node.writer_gid_seq) == 1 + 8
+    assert len(node.reader_gid_seq) == 6
     writer_gid = bytes(node.writer_gid_seq[0].data)
     participant_gid = bytes(info.gid.data)
     assert writer_gid[:12] == participant_gid[:12]

@@ -146,12 +146,14 @@ def test_dds_node_latched_tf_static_reaches_late_c_reader(c_peer, run):
 
 
 def test_c_peer_sees_dds_node_in_ros_discovery_info(c_peer, run):
-    """The C side reads ros_discovery_info and finds the DdsNode's name and its one writer."""
+    """The C side reads ros_discovery_info and finds the DdsNode's name and its endpoints."""
     publisher = run(*python_peer('pub', '--name', 'interop_probe', '--hold', '30'))
     publisher.wait_for_line('sent 1')
     reader = run(str(c_peer), 'discovery', 'interop_probe', '20')
     assert reader.finish() == 0, (reader.stdout, reader.stderr)
-    assert 'node / interop_probe readers=0 writers=1' in reader.stdout
+    # Its writer and rclpy's built-ins: six parameter services (request readers, reply writers),
+    # the /parameter_events and /rosout writers.
+    assert 'node / interop_probe readers=6 writers=9' in reader.stdout
 
 
 def test_typed_c_peer_matches_by_type_name_because_we_send_no_type_information(c_peer_typed, run):

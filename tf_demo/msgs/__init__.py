@@ -16,8 +16,9 @@
 The standalone world's ROS 2 messages and their CDR codec.
 
 One module per ROS package (``builtin_interfaces``, ``std_msgs``, ``geometry_msgs``, ``nav_msgs``,
-``sensor_msgs``, ``tf2_msgs``, ``rosgraph_msgs``, ``rmw_dds_common``) with rclpy-compatible
-classes; :mod:`~tf_demo.msgs.cdr` (de)serialises them byte-identically to ROS 2;
+``sensor_msgs``, ``tf2_msgs``, ``rosgraph_msgs``, ``rmw_dds_common``, ``service_msgs``,
+``rcl_interfaces``) with rclpy-compatible classes (services: ``Service`` types with ``Request``
+and ``Response``); :mod:`~tf_demo.msgs.cdr` (de)serialises them byte-identically to ROS 2;
 :mod:`~tf_demo.msgs.convert` turns them into the core's plain values; :mod:`~tf_demo.msgs.typehash`
 gives their RIHS01 hashes. Everything is generated from the table in ``_schema.py``.
 """

@@ -651,6 +651,12 @@ class _EncoderBuilder(_Builder):
                 if sys.byteorder != 'little' and prim.size > 1:
                     self.emit(f'{converted}.byteswap()')  # the wire is little-endian
                 self.emit(f'out += {converted}.tobytes()')
+            elif field.base == 'byte':
+                joined = self.name('j')
+                self.emit(f"{joined} = b''.join({sequence})")
+                self.emit(f'if len({joined}) != len({sequence}):')
+                self.emit('    raise _Malformed')
+                self.emit(f'out += {joined}')
             else:
                 self.emit(f'out += bytes([1 if x else 0 for x in {sequence}])')
             self.indent -= 1

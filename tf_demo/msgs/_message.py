@@ -26,6 +26,7 @@ from __future__ import annotations
 from array import array
 from collections.abc import Callable
 import importlib
+import sys
 from typing import Any
 from typing import cast
 from typing import ClassVar
@@ -197,7 +198,8 @@ class _MessageMeta(type):
         if not bases or module == __name__:
             return super().__new__(mcs, name, bases, namespace)
         package = module.rsplit('.', 1)[-1]
-        spec = spec_for(f'{package}/msg/{name}')
+        declared = namespace.get('__msgtype__')  # a service's request/response/event
+        spec = spec_for(declared if isinstance(declared, str) else f'{package}/msg/{name}')
         namespace['__slots__'] = tuple(field.name for field in spec.fields)
         namespace['__msgtype__'] = spec.msgtype
         namespace['__dds_typename__'] = spec.dds_typename
@@ -245,10 +247,51 @@ class Message(metaclass=_MessageMeta):
         return dict(cls._fields_and_field_types)
 
     def __repr__(self) -> str:
-        """Format as rclpy does: ``pkg.msg.Name(field=value, ...)``."""
+        """Format as rclpy does: ``pkg.msg.Name(field=value, ...)`` (``pkg.srv.`` for services)."""
         spec = self._spec
         args = ', '.join(
             f'{field.name}={_field_repr(field, getattr(self, field.name))}'
             for field in spec.fields
         )
-        return f'{spec.package}.msg.{spec.name}({args})'
+        return f'{spec.package}.{spec.interface}.{spec.name}({args})'
+
+
+#: Every generated service type, by ``pkg/srv/Name``.
+SERVICE_REGISTRY: dict[str, type[Service]] = {}
+
+
+class Service:
+    """
+    Base of the standalone world's ROS service types (rclpy's ``srv`` class surface).
+
+    A package module declares ``class GetParameters(Service): ...``; the subclass gets the
+    message classes ``Request``, ``Response`` and ``Event`` (also module attributes
+    ``GetParameters_Request`` etc.) from the schema table, and ``__srvtype__``,
+    ``__typehash__`` (the service's RIHS01 hash, as rosidl computes it).
+    """
+
+    Request: ClassVar[type[Message]]
+    Response: ClassVar[type[Message]]
+    Event: ClassVar[type[Message]]
+    __srvtype__: ClassVar[str]
+    __typehash__: ClassVar[str]
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        module = sys.modules[cls.__module__]
+        package = cls.__module__.rsplit('.', 1)[-1]
+        srvtype = f'{package}/srv/{cls.__name__}'
+        for part in ('Request', 'Response', 'Event'):
+            name = f'{cls.__name__}_{part}'
+            namespace = {
+                '__module__': cls.__module__,
+                '__qualname__': name,
+                '__doc__': f'{srvtype}_{part}.',
+                '__msgtype__': f'{srvtype}_{part}',
+            }
+            message_cls = _MessageMeta(name, (Message,), namespace)
+            setattr(module, name, message_cls)
+            setattr(cls, part, message_cls)
+        cls.__srvtype__ = srvtype
+        cls.__typehash__ = type_hash(srvtype)
+        SERVICE_REGISTRY[srvtype] = cls

@@ -192,6 +192,9 @@ class _Writer:
         if base == 'bool':
             if not isinstance(value, bool | numpy.bool_ | int):
                 raise self.fail(path, f'expected bool, got {value!r}')
+        elif base == 'byte':
+            if not isinstance(value, bytes) or len(value) != 1:
+                raise self.fail(path, f'expected byte (a bytes of length 1), got {value!r}')
         elif base in _INT_RANGES:
             low, high = _INT_RANGES[base]
             if isinstance(value, bool) or not isinstance(value, int | numpy.integer):

@@ -72,7 +72,71 @@ DEFINITIONS: dict[str, str] = {
     'rmw_dds_common/msg/ParticipantEntitiesInfo': (
         'Gid gid; NodeEntitiesInfo[] node_entities_info_seq'
     ),
+    'service_msgs/msg/ServiceEventInfo': (
+        'uint8 event_type; builtin_interfaces/Time stamp; char[16] client_gid; '
+        'int64 sequence_number'
+    ),
+    'rcl_interfaces/msg/ParameterType': '',
+    'rcl_interfaces/msg/ParameterValue': (
+        'uint8 type; bool bool_value; int64 integer_value; float64 double_value; '
+        'string string_value; byte[] byte_array_value; bool[] bool_array_value; '
+        'int64[] integer_array_value; float64[] double_array_value; string[] string_array_value'
+    ),
+    'rcl_interfaces/msg/Parameter': 'string name; ParameterValue value',
+    'rcl_interfaces/msg/FloatingPointRange': 'float64 from_value; float64 to_value; float64 step',
+    'rcl_interfaces/msg/IntegerRange': 'int64 from_value; int64 to_value; uint64 step',
+    'rcl_interfaces/msg/ParameterDescriptor': (
+        'string name; uint8 type; string description; string additional_constraints; '
+        'bool read_only False; bool dynamic_typing False; '
+        'FloatingPointRange[<=1] floating_point_range; IntegerRange[<=1] integer_range'
+    ),
+    'rcl_interfaces/msg/SetParametersResult': 'bool successful; string reason',
+    'rcl_interfaces/msg/ListParametersResult': 'string[] names; string[] prefixes',
+    'rcl_interfaces/msg/ParameterEvent': (
+        'builtin_interfaces/Time stamp; string node; Parameter[] new_parameters; '
+        'Parameter[] changed_parameters; Parameter[] deleted_parameters'
+    ),
+    'rcl_interfaces/msg/Log': (
+        'builtin_interfaces/Time stamp; uint8 level; string name; string msg; string file; '
+        'string function; uint32 line'
+    ),
 }
+
+#: ``.srv`` definitions of ROS 2 Jazzy: (request fields, response fields), as in
+#: :data:`DEFINITIONS`. Each adds ``<srv>_Request``, ``<srv>_Response`` and ``<srv>_Event``
+#: (rosidl's service event message) to :data:`DEFINITIONS`.
+SERVICE_DEFINITIONS: dict[str, tuple[str, str]] = {
+    'rcl_interfaces/srv/ListParameters': (
+        'string[] prefixes; uint64 depth',
+        'ListParametersResult result',
+    ),
+    'rcl_interfaces/srv/GetParameters': ('string[] names', 'ParameterValue[] values'),
+    'rcl_interfaces/srv/SetParameters': (
+        'Parameter[] parameters',
+        'SetParametersResult[] results',
+    ),
+    'rcl_interfaces/srv/SetParametersAtomically': (
+        'Parameter[] parameters',
+        'SetParametersResult result',
+    ),
+    'rcl_interfaces/srv/DescribeParameters': (
+        'string[] names',
+        'ParameterDescriptor[] descriptors',
+    ),
+    'rcl_interfaces/srv/GetParameterTypes': ('string[] names', 'uint8[] types'),
+    'tf2_msgs/srv/FrameGraph': ('', 'string frame_yaml'),
+}
+
+#: What rosidl puts in a message that has no fields.
+EMPTY_STRUCTURE = 'uint8 structure_needs_at_least_one_member'
+
+for _srvtype, (_request, _response) in SERVICE_DEFINITIONS.items():
+    DEFINITIONS[f'{_srvtype}_Request'] = _request
+    DEFINITIONS[f'{_srvtype}_Response'] = _response
+    DEFINITIONS[f'{_srvtype}_Event'] = (
+        f'service_msgs/ServiceEventInfo info; {_srvtype}_Request[<=1] request; '
+        f'{_srvtype}_Response[<=1] response'
+    )
 
 
 @dataclass(frozen=True)
@@ -85,7 +149,7 @@ class Primitive:
     :ivar size: the wire size in bytes, which is also its CDR alignment.
     :ivar array_code: the :mod:`array` typecode rclpy uses for a sequence of it ('' for a list).
     :ivar numpy_dtype: the numpy dtype rclpy uses for a fixed array of it ('' for a list).
-    :ivar default: the Python default value.
+    :ivar default: the Python default value (``byte`` is a 1-byte ``bytes``, as in rclpy).
     """
 
     idl: str
@@ -93,15 +157,16 @@ class Primitive:
     size: int
     array_code: str
     numpy_dtype: str
-    default: bool | int | float
+    default: bool | int | float | bytes
 
 
-#: The ROS ``.msg`` primitive types (``byte`` and ``wstring`` are not supported).
+#: The ROS ``.msg`` primitive types (``wstring`` is not supported).
 PRIMITIVES: dict[str, Primitive] = {
     'bool': Primitive('boolean', '?', 1, '', '', False),
     'int8': Primitive('int8', 'b', 1, 'b', 'int8', 0),
     'uint8': Primitive('uint8', 'B', 1, 'B', 'uint8', 0),
     'char': Primitive('uint8', 'B', 1, 'B', 'uint8', 0),
+    'byte': Primitive('octet', 'c', 1, '', '', b'\x00'),
     'int16': Primitive('int16', 'h', 2, 'h', 'int16', 0),
     'uint16': Primitive('uint16', 'H', 2, 'H', 'uint16', 0),
     'int32': Primitive('int32', 'i', 4, 'i', 'int32', 0),
@@ -134,7 +199,7 @@ class FieldSpec:
     kind: Kind
     size: int
     string_bound: int
-    default: bool | int | float | str | None
+    default: bool | int | float | str | bytes | None
 
     @property
     def is_nested(self) -> bool:
@@ -165,9 +230,14 @@ class MessageSpec:
         return self.msgtype.rsplit('/', 1)[1]
 
     @property
+    def interface(self) -> str:
+        """Return ``'msg'``, or ``'srv'`` for a service's request, response and event."""
+        return self.msgtype.split('/')[1]
+
+    @property
     def dds_typename(self) -> str:
-        """Return the DDS type name rmw uses, ``pkg::msg::dds_::Name_``."""
-        return f'{self.package}::msg::dds_::{self.name}_'
+        """Return the DDS type name rmw uses, ``pkg::msg::dds_::Name_`` (``pkg::srv::...``)."""
+        return f'{self.package}::{self.interface}::dds_::{self.name}_'
 
 
 class SchemaError(ValueError):
@@ -188,11 +258,12 @@ def _parse_field(package: str, text: str) -> FieldSpec:
         raise SchemaError(msg)
     base = match['base']
     if base not in PRIMITIVES and base != 'string':
-        if base in ('byte', 'wstring'):
+        if base == 'wstring':
             msg = f'field type {base!r} is not supported'
             raise SchemaError(msg)
-        pkg, _, name = base.rpartition('/')
-        base = f'{pkg or package}/msg/{name}'
+        if base.count('/') < 2:  # 'Name' or 'pkg/Name'; 'pkg/srv/Name' is kept
+            pkg, _, name = base.rpartition('/')
+            base = f'{pkg or package}/msg/{name}'
     string_bound = int(match['strbound'] or 0)
     if string_bound and base != 'string':
         msg = f'only strings take a <=N bound: {text!r}'
@@ -202,7 +273,7 @@ def _parse_field(package: str, text: str) -> FieldSpec:
     if match['size'] is not None:
         kind = 'sequence' if match['le'] or not match['size'] else 'array'
         size = int(match['size'] or 0)
-    default: bool | int | float | str | None = None
+    default: bool | int | float | str | bytes | None = None
     if match['default'] is not None:
         default = ast.literal_eval(match['default'])
     return FieldSpec(match['name'], base, kind, size, string_bound, default)
@@ -211,13 +282,25 @@ def _parse_field(package: str, text: str) -> FieldSpec:
 def parse_definition(msgtype: str, text: str) -> MessageSpec:
     """Parse the ``;``-separated ``.msg`` text of ``msgtype``."""
     package = msgtype.split('/', 1)[0]
-    fields = tuple(_parse_field(package, part) for part in text.split(';') if part.strip())
+    parts = [part for part in text.split(';') if part.strip()] or [EMPTY_STRUCTURE]
+    fields = tuple(_parse_field(package, part) for part in parts)
     return MessageSpec(msgtype, fields)
 
 
 #: Every message type of :data:`DEFINITIONS`, parsed.
 SPECS: dict[str, MessageSpec] = {
     msgtype: parse_definition(msgtype, text) for msgtype, text in DEFINITIONS.items()
+}
+
+
+#: The service types themselves (for their type hashes): rosidl's three nested messages.
+SERVICE_SPECS: dict[str, MessageSpec] = {
+    srvtype: parse_definition(
+        srvtype,
+        f'{srvtype}_Request request_message; {srvtype}_Response response_message; '
+        f'{srvtype}_Event event_message',
+    )
+    for srvtype in SERVICE_DEFINITIONS
 }
 
 

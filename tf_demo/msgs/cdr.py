@@ -80,8 +80,10 @@ def msgtype_of(message_or_type: Any) -> str:
         if isinstance(declared, str):
             msgtype = declared
         else:
-            package, _, _ = str(getattr(cls, '__module__', '')).partition('.msg')
-            msgtype = f'{package}/msg/{cls.__name__}'
+            module = str(getattr(cls, '__module__', ''))
+            interface = 'srv' if '.srv' in module else 'msg'
+            package, _, _ = module.partition(f'.{interface}')
+            msgtype = f'{package}/{interface}/{cls.__name__}'
         what = f'{cls.__module__}.{cls.__name__}'
     try:
         return spec_for(msgtype).msgtype

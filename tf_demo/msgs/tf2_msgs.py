@@ -13,7 +13,7 @@
 # limitations under the License.
 
 """
-The standalone world's ``tf2_msgs/msg`` types (rclpy-compatible fields and defaults).
+The standalone world's ``tf2_msgs`` types (``msg/TFMessage``, ``srv/FrameGraph``).
 
 The fields come from :data:`tf_demo.msgs._schema.DEFINITIONS`; see
 :class:`tf_demo.msgs._message.Message`.
@@ -22,10 +22,16 @@ The fields come from :data:`tf_demo.msgs._schema.DEFINITIONS`; see
 from __future__ import annotations
 
 from tf_demo.msgs._message import Message
-import tf_demo.msgs.geometry_msgs  # noqa: F401 - defines the nested types first
+from tf_demo.msgs._message import Service
+import tf_demo.msgs.geometry_msgs
+import tf_demo.msgs.service_msgs  # noqa: F401 - the services' event messages nest it
 
-__all__ = ['TFMessage']
+__all__ = ['FrameGraph', 'TFMessage']
 
 
 class TFMessage(Message):
     """tf2_msgs/msg/TFMessage."""
+
+
+class FrameGraph(Service):
+    """tf2_msgs/srv/FrameGraph (what ``view_frames`` asks a tf2_ros Buffer for)."""

@@ -28,6 +28,8 @@ import json
 from typing import Any
 
 from tf_demo.msgs._schema import FieldSpec
+from tf_demo.msgs._schema import MessageSpec
+from tf_demo.msgs._schema import SERVICE_SPECS
 from tf_demo.msgs._schema import spec_for
 
 _VALUE_TYPE_IDS = {
@@ -44,6 +46,7 @@ _VALUE_TYPE_IDS = {
     'float32': 10,
     'float64': 11,
     'bool': 15,
+    'byte': 16,
     'string': 17,
     'bounded_string': 21,
 }
@@ -66,9 +69,15 @@ def _field_type_id(field: FieldSpec) -> int:
     return value_id
 
 
+def _spec(typename: str) -> MessageSpec:
+    """Return the parsed definition of a message type or of a service type."""
+    service = SERVICE_SPECS.get(typename)
+    return service if service is not None else spec_for(typename)
+
+
 def _individual_description(msgtype: str) -> dict[str, Any]:
     """Return the hashable individual type description of ``msgtype`` (no default values)."""
-    spec = spec_for(msgtype)
+    spec = _spec(msgtype)
     return {
         'type_name': spec.msgtype,
         'fields': [
@@ -76,7 +85,7 @@ def _individual_description(msgtype: str) -> dict[str, Any]:
                 'name': field.name,
                 'type': {
                     'type_id': _field_type_id(field),
-                    'capacity': field.size if field.kind == 'array' else 0,
+                    'capacity': field.size,  # array length or sequence bound, else 0
                     'string_capacity': field.string_bound,
                     'nested_type_name': field.base if field.is_nested else '',
                 },
@@ -88,7 +97,7 @@ def _individual_description(msgtype: str) -> dict[str, Any]:
 
 def type_description(msgtype: str) -> dict[str, Any]:
     """Return the full hashable type description of ``msgtype`` with its referenced types."""
-    top = spec_for(msgtype)
+    top = _spec(msgtype)
     referenced: set[str] = set()
     pending = [field.base for field in top.fields if field.is_nested]
     while pending:
@@ -106,7 +115,7 @@ def type_description(msgtype: str) -> dict[str, Any]:
 
 @functools.cache
 def type_hash(msgtype: str) -> str:
-    """Return the ``RIHS01_<sha256 hex>`` type hash of ``msgtype``."""
+    """Return the ``RIHS01_<sha256 hex>`` type hash of ``msgtype`` (a message or a service)."""
     text = json.dumps(
         type_description(msgtype),
         ensure_ascii=True,

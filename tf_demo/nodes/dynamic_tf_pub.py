@@ -16,14 +16,16 @@
 ``dynamic_tf_pub``: odom -> base_link moving on a circle, published on ``/tf`` at 20 Hz.
 
 With ``t`` the seconds of the stamp used: x = r·cos(t), y = r·sin(t), z = 0 and rotation
-(0, 0, sin(t/2), cos(t/2)) (a yaw of ``t``). Parameters: ``radius`` (1.0), ``rate`` (20.0 Hz),
-``parent_frame`` (``odom``), ``child_frame`` (``base_link``).
+(0, 0, sin(t/2), cos(t/2)) (a yaw of ``t``). Parameters: ``radius`` (1.0; may be set while
+running, e.g. ``ros2 param set /dynamic_tf_pub radius 2.0``), ``rate`` (20.0 Hz), ``parent_frame``
+(``odom``), ``child_frame`` (``base_link``).
 """
 
 from __future__ import annotations
 
 import math
 import sys
+from typing import Any
 
 from tf_demo.ros.node_helpers import as_float
 from tf_demo.ros.node_helpers import as_frame
@@ -36,6 +38,7 @@ from tf_demo.ros.node_helpers import require_distinct_frames
 from tf_demo.ros.node_helpers import Vec3
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import Node
+from tf_demo.transport import NodeConfigError
 from tf_demo.transport import run_node
 
 NODE_NAME = 'dynamic_tf_pub'
@@ -63,10 +66,30 @@ class DynamicTfPublisher(Node):  # type: ignore[misc]  # Node is the backend's c
         require_distinct_frames(self.parent_frame, self.child_frame)
         self.broadcaster = TransformBroadcaster(self)
         self.timer = self.create_timer(1.0 / self.rate, self.publish_once)
+        self.add_on_set_parameters_callback(self._check_radius)
+        self.add_post_set_parameters_callback(self._take_radius)
         self.get_logger().info(
             f'Publishing {self.parent_frame} -> {self.child_frame} on a circle of radius '
             f'{self.radius:g} m at {self.rate:g} Hz'
         )
+
+    def _check_radius(self, parameters: list[Any]) -> Any:
+        """Accept a new ``radius`` only when it is a finite number (as at start-up)."""
+        from tf_demo.transport.parameters import SetParametersResult
+
+        for parameter in parameters:
+            if parameter.name == 'radius':
+                try:
+                    as_float('radius', parameter.value)
+                except NodeConfigError as error:
+                    return SetParametersResult(successful=False, reason=str(error))
+        return SetParametersResult(successful=True)
+
+    def _take_radius(self, parameters: list[Any]) -> None:
+        """Use a ``radius`` that was set from the next transform on."""
+        for parameter in parameters:
+            if parameter.name == 'radius':
+                self.radius = as_float('radius', parameter.value)
 
     def publish_once(self) -> None:
         """Publish the transform for the current time."""

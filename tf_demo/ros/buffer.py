@@ -694,8 +694,9 @@ def _create_frames_service(node: Any, buffer: Buffer) -> Any:
     """
     Offer tf2_ros's ``tf2_frames`` service (``tf2_msgs/srv/FrameGraph``) when the world has it.
 
-    ``ros2 run tf2_tools view_frames`` calls it. Nodes without ``create_service`` (the
-    standalone world) or without the service type simply do not offer it.
+    ``ros2 run tf2_tools view_frames`` calls it. A standalone node offers it with the
+    standalone world's ``FrameGraph``; nodes without ``create_service`` or without the service
+    type simply do not offer it.
     """
     create_service = getattr(node, 'create_service', None)
     if create_service is None:
@@ -703,7 +704,9 @@ def _create_frames_service(node: Any, buffer: Buffer) -> Any:
     try:
         import importlib
 
-        frame_graph = importlib.import_module('tf2_msgs.srv').FrameGraph
+        standalone = type(node).__module__.startswith('tf_demo.')
+        module = 'tf_demo.msgs.tf2_msgs' if standalone else 'tf2_msgs.srv'
+        frame_graph = importlib.import_module(module).FrameGraph
     except (ImportError, AttributeError):
         return None
 

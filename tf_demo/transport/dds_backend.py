@@ -56,6 +56,7 @@ from tf_demo.transport.clock import Clock
 from tf_demo.transport.clock import Duration
 from tf_demo.transport.clock import ROSClock
 from tf_demo.transport.clock import TimeSource
+from tf_demo.transport.dds_services import NodeServicesMixin
 from tf_demo.transport.qos import QoSProfile
 
 __all__ = [
@@ -777,9 +778,13 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
 _creation_counter = itertools.count()
 
 
-class DdsNode:
+class DdsNode(NodeServicesMixin):
     """
     A standalone node with the ``rclpy.node.Node`` subset that tf_demo uses.
+
+    Like an rclpy node it publishes ``/parameter_events`` and (``enable_rosout``) its log lines
+    on ``/rosout``, offers the parameter services (``start_parameter_services``) and has
+    rclpy's service and client methods (``dds_services.NodeServicesMixin``).
 
     :param node_name: the node's name (``__node:=`` in ``--ros-args`` overrides it).
     :param namespace: absolute or relative namespace (``__ns:=`` overrides it).
@@ -803,8 +808,9 @@ class DdsNode:
         automatically_declare_parameters_from_overrides: bool = False,
         enable_logger_service: bool = False,
     ) -> None:
-        del context, enable_rosout, start_parameter_services, enable_logger_service
+        del context, enable_logger_service
         from tf_demo.transport import ros_args
+        from tf_demo.transport.dds_parameter_services import NodeInterfaces
         from tf_demo.transport.logging import get_logger
         from tf_demo.transport.parameters import ParameterStore
 
@@ -847,12 +853,18 @@ class DdsNode:
         self._publishers: list[DdsPublisher] = []
         self._subscriptions: list[DdsSubscription] = []
         self._timers: list[DdsTimer] = []
+        self._services: list[Any] = []
+        self._clients: list[Any] = []
         self._executors: weakref.WeakSet[DdsExecutor] = weakref.WeakSet()
         self._default_callback_group: CallbackGroup = MutuallyExclusiveCallbackGroup()
         self._clock = ROSClock()
         self._participant = _participant()
         with _context.lock:
             _context.nodes.add(self)
+        self._interfaces: NodeInterfaces | None = None
+        self._interfaces = NodeInterfaces(
+            self, enable_rosout=enable_rosout, start_parameter_services=start_parameter_services
+        )
         self._time_source = TimeSource(node=cast('Any', self))
         self._time_source.attach_clock(self._clock)
         _graph_changed()
@@ -1180,6 +1192,8 @@ class DdsNode:
             publishers, self._publishers = self._publishers, []
             subscriptions, self._subscriptions = self._subscriptions, []
             timers, self._timers = self._timers, []
+            services, self._services = self._services, []
+            clients, self._clients = self._clients, []
         for executor in list(self._executors):
             executor.remove_node(self)
         for publisher in publishers:
@@ -1188,6 +1202,11 @@ class DdsNode:
             subscription._close()
         for timer in timers:
             timer.destroy()
+        for entity in [*services, *clients]:
+            entity._close()
+        self._parameters.event_sink = None
+        if self._interfaces is not None:
+            self._interfaces.close()
         with _context.lock:
             _context.nodes.discard(self)
         _graph_changed()
@@ -1224,10 +1243,15 @@ class DdsNode:
         return list(self._timers)
 
     def _reader_gids(self) -> list[bytes]:
-        return [s._reader.guid for s in self._subscriptions]
+        return [s._reader.guid for s in self._subscriptions] + self._service_reader_gids()
 
     def _writer_gids(self) -> list[bytes]:
-        return [p._writer.guid for p in self._publishers]
+        interfaces = getattr(self, '_interfaces', None)
+        return [
+            *(p._writer.guid for p in self._publishers),
+            *self._service_writer_gids(),
+            *(interfaces.writer_gids() if interfaces is not None else ()),
+        ]
 
     def _wake_executors(self) -> None:
         for executor in list(self._executors):

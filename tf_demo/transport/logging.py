@@ -20,7 +20,8 @@ default; ``RCUTILS_CONSOLE_OUTPUT_FORMAT`` (``{severity}``, ``{name}``, ``{messa
 ``{time}``, ``{time_as_nanoseconds}``, ``{date_time_with_ms}``, ``{function_name}``,
 ``{file_name}``, ``{line_number}``) and ``RCUTILS_COLORIZED_OUTPUT`` are honoured, and
 ``RCUTILS_LOGGING_USE_STDOUT=1`` sends the lines to stdout. Levels follow the logger hierarchy
-(``a.b`` inherits from ``a``, then from the default level set by ``--log-level``).
+(``a.b`` inherits from ``a``, then from the default level set by ``--log-level``). Log sinks
+(:func:`add_log_sink`; the standalone ``/rosout``) get every message that is emitted.
 
 In the rclpy world :func:`get_logger`, :class:`LoggingSeverity` and the level functions are
 rclpy's own.
@@ -29,12 +30,14 @@ rclpy's own.
 from __future__ import annotations
 
 from collections.abc import Callable
+import contextlib
 from enum import IntEnum
 import os
 import sys
 import threading
 import time
 from typing import Any
+from typing import NamedTuple
 from typing import TextIO
 
 from tf_demo.transport.backend import rclpy_world
@@ -366,15 +369,19 @@ class Logger:
 
     def __init__(self, name: str = '') -> None:
         self.name = name
+        self.parent: Logger | None = None
+        """The logger this one is a child of (rcl's rosout sublogger), if any."""
         self._contexts: dict[CallerId, dict[str, Any]] = {}
         self._contexts_lock = threading.Lock()
 
     def get_child(self, name: str) -> Logger:
-        """Return the logger ``<this name>.<name>``."""
+        """Return the logger ``<this name>.<name>`` (it logs to its parent's ``/rosout``)."""
         if not name:
             msg = 'Child logger name must not be empty.'
             raise ValueError(msg)
-        return Logger(f'{self.name}.{name}' if self.name else name)
+        child = Logger(f'{self.name}.{name}' if self.name else name)
+        child.parent = self if self.name else None
+        return child
 
     def set_level(self, level: LoggingSeverity | int) -> None:
         """Set this logger's own level."""
@@ -428,11 +435,12 @@ class Logger:
             )
             raise TypeError(msg)
         stream = _stream()
+        stamp_ns = time.time_ns()
         line = format_log_line(
             severity,
             name,
             message,
-            time.time_ns(),
+            stamp_ns,
             output_format=os.environ.get('RCUTILS_CONSOLE_OUTPUT_FORMAT') or DEFAULT_OUTPUT_FORMAT,
             function_name=frame.f_code.co_name,
             file_name=frame.f_code.co_filename,
@@ -440,13 +448,21 @@ class Logger:
         )
         if _colorize(stream):
             line = f'{_COLORS[severity]}{line}{_COLOR_RESET}'
+        printed = True
         with _STATE.lock:
             try:
                 stream.write(line + '\n')
                 stream.flush()
             except (OSError, ValueError):
-                return False  # a closed stream must not crash the node
-        return True
+                printed = False  # a closed stream must not crash the node
+        if _SINKS:
+            _emit_to_sinks(
+                LogRecord(
+                    self, severity, name, message, stamp_ns,
+                    frame.f_code.co_name, frame.f_code.co_filename, frame.f_lineno,
+                )
+            )  # fmt: skip
+        return printed
 
     def debug(self, message: Any, **kwargs: Any) -> bool:
         """Log at DEBUG."""
@@ -472,6 +488,51 @@ class Logger:
 
     def __repr__(self) -> str:
         return f'Logger(name={self.name!r})'
+
+
+class LogRecord(NamedTuple):
+    """One message a logger emitted, as log sinks (``/rosout``) receive it."""
+
+    logger: Logger
+    severity: LoggingSeverity
+    name: str
+    message: str
+    stamp_ns: int
+    function_name: str
+    file_name: str
+    line_number: int
+
+
+LogSink = Callable[[LogRecord], None]
+_SINKS: list[LogSink] = []
+_in_sink = threading.local()
+
+
+def add_log_sink(sink: LogSink) -> None:
+    """Have ``sink`` called with every message that is emitted (rcutils' output handlers)."""
+    with _STATE.lock:
+        if sink not in _SINKS:
+            _SINKS.append(sink)
+
+
+def remove_log_sink(sink: LogSink) -> None:
+    """Stop calling ``sink``."""
+    with _STATE.lock:
+        if sink in _SINKS:
+            _SINKS.remove(sink)
+
+
+def _emit_to_sinks(record: LogRecord) -> None:
+    """Give ``record`` to every sink; what a sink logs itself is not fed back to sinks."""
+    if getattr(_in_sink, 'active', False):
+        return
+    _in_sink.active = True
+    try:
+        for sink in tuple(_SINKS):
+            with contextlib.suppress(Exception):  # a failing sink must not break logging
+                sink(record)
+    finally:
+        _in_sink.active = False
 
 
 def get_logger(name: str) -> Logger:

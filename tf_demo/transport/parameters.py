@@ -293,6 +293,7 @@ class ParameterUninitializedException(ParameterException):
 OnSetCallback = Callable[[list[Parameter]], SetParametersResult]
 PreSetCallback = Callable[[list[Parameter]], list[Parameter]]
 PostSetCallback = Callable[[list[Parameter]], None]
+ParameterEventSink = Callable[[list[Parameter], list[Parameter], list[Parameter]], None]
 _WRONG_TYPE_PREFIX = 'Wrong parameter type'
 # Relative tolerance of floating point range checks (rclpy's Node.PARAM_REL_TOL).
 PARAM_REL_TOL = 1e-6
@@ -329,6 +330,8 @@ class ParameterStore:
         self._on_set_callbacks: list[OnSetCallback] = []
         self._post_set_callbacks: list[PostSetCallback] = []
         self._allow_undeclared = allow_undeclared_parameters
+        self.event_sink: ParameterEventSink | None = None
+        """Told ``(new, changed, deleted)`` after every successful set (``/parameter_events``)."""
         if automatically_declare_parameters_from_overrides:
             self._declare_common(
                 list(self._overrides.values()),
@@ -602,11 +605,20 @@ class ParameterStore:
                         msg = 'on-set parameters callback must return a SetParametersResult'
                         raise TypeError(msg)
                     return result
+            new: list[Parameter] = []
+            changed: list[Parameter] = []
+            deleted: list[Parameter] = []
             for parameter in parameter_list:
                 if not allow_not_set_type and parameter.type_ is ParameterType.NOT_SET:
+                    deleted.append(parameter)
                     self._parameters.pop(parameter.name, None)
                     self._descriptors.pop(parameter.name, None)
                     continue
+                previous = self._parameters.get(parameter.name)
+                if previous is None or previous.type_ is ParameterType.NOT_SET:
+                    new.append(parameter)
+                else:
+                    changed.append(parameter)
                 if descriptors is not None:
                     self._descriptors[parameter.name] = descriptors[parameter.name]
                 elif parameter.name not in self._descriptors:
@@ -615,6 +627,9 @@ class ParameterStore:
                     )
                 self._parameters[parameter.name] = parameter
             post_callbacks = list(self._post_set_callbacks)
+            event_sink = self.event_sink
+        if event_sink is not None:
+            event_sink(new, changed, deleted)
         for post_callback in post_callbacks:
             post_callback(list(parameter_list))
         return SetParametersResult(successful=True)
