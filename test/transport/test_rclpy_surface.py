@@ -56,6 +56,9 @@ import sys
 import time
 from typing import Any
 
+from conftest import HAVE_CYCLONEDDS
+from conftest import STANDALONE_ONLY
+from conftest import WORLD
 import numpy as np
 import pytest
 
@@ -156,9 +159,21 @@ RCLPY_NODE: dict[str, list[Param]] = {
         'timer_period_sec', 'callback', 'callback_group', 'clock', 'autostart',
         callback_group=None, clock=None, autostart=True,
     ),
+    # def create_service(self, srv_type, srv_name, callback, *,
+    #     qos_profile=qos_profile_services_default, callback_group=None)
+    'create_service': _params(
+        'srv_type', 'srv_name', 'callback', kw=[('qos_profile', ANY), ('callback_group', None)]
+    ),
+    # def create_client(self, srv_type, srv_name, *, qos_profile=qos_profile_services_default,
+    #     callback_group=None)
+    'create_client': _params(
+        'srv_type', 'srv_name', kw=[('qos_profile', ANY), ('callback_group', None)]
+    ),
     'destroy_publisher': _params('publisher'),
     'destroy_subscription': _params('subscription'),
     'destroy_timer': _params('timer'),
+    'destroy_service': _params('service'),
+    'destroy_client': _params('client'),
     'destroy_node': _params(),
     'count_publishers': _params('topic_name'),
     'count_subscribers': _params('topic_name'),
@@ -299,6 +314,11 @@ def incompatibilities(
 
 
 def _surface_cases() -> Iterator[Any]:
+    if not HAVE_CYCLONEDDS:
+        yield pytest.param(
+            'DdsNode', None, [], False, id='standalone', marks=pytest.mark.skip(STANDALONE_ONLY)
+        )
+        return
     from tf_demo.transport import dds_backend as dds
 
     cases: list[tuple[str, Callable[..., Any], list[Param], bool]] = []
@@ -328,6 +348,45 @@ def _surface_cases() -> Iterator[Any]:
         cases.append((f'Logger.{name}', getattr(Logger, name), params, True))
     for label, function, params, bound in cases:
         yield pytest.param(label, function, params, bound, id=label)
+
+
+def _real_rclpy_cases() -> Iterator[Any]:
+    """The rclpy objects each table above describes (only where rclpy imports)."""
+    if WORLD != 'rclpy':
+        yield pytest.param(
+            'rclpy', None, [], False, id='rclpy', marks=pytest.mark.skip('needs real rclpy')
+        )
+        return
+    import rclpy
+    import rclpy.executors
+    import rclpy.impl.rcutils_logger
+    import rclpy.node
+    import rclpy.publisher
+    import rclpy.subscription
+
+    tables: list[tuple[str, Any, dict[str, list[Param]], bool]] = [
+        ('Node', rclpy.node.Node, RCLPY_NODE, True),
+        ('rclpy', rclpy, RCLPY_FUNCTIONS, False),
+        ('SingleThreadedExecutor', rclpy.executors.SingleThreadedExecutor, RCLPY_EXECUTOR, True),
+        ('Publisher', rclpy.publisher.Publisher, RCLPY_PUBLISHER, True),
+        ('Subscription', rclpy.subscription.Subscription, RCLPY_SUBSCRIPTION, True),
+        ('RcutilsLogger', rclpy.impl.rcutils_logger.RcutilsLogger, RCLPY_LOGGER, True),
+    ]
+    for owner, holder, table, bound in tables:
+        for name, params in table.items():
+            label = f'{owner}.{name}'
+            yield pytest.param(label, getattr(holder, name), params, bound, id=label)
+    init = rclpy.executors.MultiThreadedExecutor.__init__
+    label = 'MultiThreadedExecutor.__init__'
+    yield pytest.param(label, init, RCLPY_MULTI_THREADED_INIT, True, id=label)
+
+
+@pytest.mark.parametrize(('label', 'function', 'rclpy_params', 'bound'), list(_real_rclpy_cases()))
+def test_the_rclpy_tables_are_the_real_rclpys_signatures(
+    label: str, function: Callable[..., Any], rclpy_params: list[Param], bound: bool
+) -> None:
+    """Measured, not inferred: every table row above is the signature of the real rclpy."""
+    assert incompatibilities(label, function, rclpy_params, bound=bound) == []
 
 
 @pytest.mark.parametrize(('label', 'function', 'rclpy_params', 'bound'), list(_surface_cases()))
