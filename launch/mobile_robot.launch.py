@@ -26,6 +26,7 @@ stand-in for odometry).
 import os
 
 from ament_index_python.packages import get_package_share_directory
+from ament_index_python.packages import PackageNotFoundError
 from launch.actions import DeclareLaunchArgument
 from launch.conditions import IfCondition
 from launch.substitutions import Command
@@ -36,6 +37,15 @@ from launch_ros.parameter_descriptions import ParameterValue
 from launch import LaunchDescription
 
 
+def rviz_installed() -> bool:
+    """Whether rviz2 is installed (it is not part of every ROS 2 installation)."""
+    try:
+        get_package_share_directory('rviz2')
+    except PackageNotFoundError:
+        return False
+    return True
+
+
 def generate_launch_description() -> LaunchDescription:
     share = get_package_share_directory('tf_demo')
     xacro_file = os.path.join(share, 'urdf', 'mobile_robot.urdf.xacro')
@@ -43,7 +53,11 @@ def generate_launch_description() -> LaunchDescription:
     robot_description = ParameterValue(Command(['xacro ', xacro_file]), value_type=str)
     return LaunchDescription(
         [
-            DeclareLaunchArgument('rviz', default_value='true', description='Start rviz2'),
+            DeclareLaunchArgument(
+                'rviz',
+                default_value=str(rviz_installed()).lower(),
+                description='Start rviz2 (default: true where rviz2 is installed)',
+            ),
             DeclareLaunchArgument(
                 'radius', default_value='1.0', description='Radius of the circle (m)'
             ),

@@ -25,6 +25,7 @@ circle (stand-in for odometry) and the robot's static frames come from
 import os
 
 from ament_index_python.packages import get_package_share_directory
+from ament_index_python.packages import PackageNotFoundError
 from launch.actions import DeclareLaunchArgument
 from launch.conditions import IfCondition
 from launch.substitutions import LaunchConfiguration
@@ -33,13 +34,26 @@ from launch_ros.actions import Node
 from launch import LaunchDescription
 
 
+def rviz_installed() -> bool:
+    """Whether rviz2 is installed (it is not part of every ROS 2 installation)."""
+    try:
+        get_package_share_directory('rviz2')
+    except PackageNotFoundError:
+        return False
+    return True
+
+
 def generate_launch_description() -> LaunchDescription:
     share = get_package_share_directory('tf_demo')
     transforms_file = os.path.join(share, 'config', 'rep105_static_transforms.yaml')
     rviz_config = os.path.join(share, 'config', 'tf_demo.rviz')
     return LaunchDescription(
         [
-            DeclareLaunchArgument('rviz', default_value='true', description='Start rviz2'),
+            DeclareLaunchArgument(
+                'rviz',
+                default_value=str(rviz_installed()).lower(),
+                description='Start rviz2 (default: true where rviz2 is installed)',
+            ),
             Node(
                 package='tf_demo',
                 executable='static_tf_pub',

@@ -126,7 +126,9 @@ if [ -f "$jazzy_setup" ]; then
     unset TF_DEMO_BACKEND
     cd "$ws"
     rm -rf build/tf_demo install/tf_demo
-    colcon build --base-paths "$here" --packages-select tf_demo \
+    # colcon through the venv's Python (ROS 2's advice for venvs): the executables' shebang is
+    # then that Python, which sees the pip-only dependencies.
+    python -m colcon build --base-paths "$here" --packages-select tf_demo \
       --event-handlers console_cohesion- >"$logs/ros_build.log" 2>&1 \
       || { cat "$logs/ros_build.log"; exit 1; }
     set +u
@@ -134,9 +136,10 @@ if [ -f "$jazzy_setup" ]; then
     source install/setup.bash
     set -u
     status=0
-    colcon test --base-paths "$here" --packages-select tf_demo --return-code-on-test-failure \
+    python -m colcon test --base-paths "$here" --packages-select tf_demo \
+      --return-code-on-test-failure \
       --event-handlers console_direct+ --pytest-args -p no:cacheprovider || status=$?
-    colcon test-result --all --verbose || true
+    python -m colcon test-result --all --verbose || true
     exit "$status"
   ) 2>&1 | tee "$logs/ros.log" || ros_status=$?
   ros_summary="$(summary_line "$logs/ros.log")"

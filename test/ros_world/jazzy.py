@@ -106,13 +106,20 @@ def graph_lists(env: dict[str, str], what: str, timeout: float = 30.0) -> Callab
 
 
 def stop(process: subprocess.Popen[str], timeout: float = 15.0) -> int:
-    """SIGINT a process (Ctrl-C) and return its exit code; kill it if it does not end."""
+    """Ctrl-C a process started by :func:`started` and return its exit code.
+
+    As a terminal does, SIGINT goes to the whole process group: ``ros2 run`` and ``ros2
+    launch`` leave it to their children to stop on the same signal. What does not end within
+    ``timeout`` is killed (and the timeout raised).
+    """
     if process.poll() is None:
-        process.send_signal(signal.SIGINT)
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(process.pid, signal.SIGINT)
     try:
         return process.wait(timeout=timeout)
     except subprocess.TimeoutExpired:
-        process.kill()
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(process.pid, signal.SIGKILL)
         process.wait()
         raise
 
@@ -121,7 +128,7 @@ def stop(process: subprocess.Popen[str], timeout: float = 15.0) -> int:
 def started(
     command: list[str], env: dict[str, str], cwd: Path | None = None
 ) -> Iterator[subprocess.Popen[str]]:
-    """A background process, stopped (SIGINT, then kill) when the block ends."""
+    """A background process in its own process group, stopped with :func:`stop` at the end."""
     process = subprocess.Popen(
         command,
         env=env,
@@ -130,7 +137,7 @@ def started(
         stdout=subprocess.PIPE,
         stderr=subprocess.STDOUT,
         text=True,
-        start_new_session=False,
+        start_new_session=True,
     )
     try:
         yield process

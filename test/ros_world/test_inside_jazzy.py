@@ -59,9 +59,9 @@ class RealTf2Listener:
         import tf2_ros
 
         self._rclpy = rclpy
-        self.context = rclpy.Context()
-        rclpy.init(context=self.context)
-        self.node = rclpy.create_node('real_tf2_listener', context=self.context)
+        # tf2_ros's spin thread runs on the default context.
+        rclpy.init()
+        self.node = rclpy.create_node('real_tf2_listener')
         self.buffer = tf2_ros.Buffer()
         self.listener = tf2_ros.TransformListener(self.buffer, self.node, spin_thread=True)
 
@@ -77,9 +77,12 @@ class RealTf2Listener:
         return self.buffer.lookup_transform(target, source, Time())
 
     def close(self) -> None:
+        # Stop tf2_ros's spin thread before the context goes, or it raises in its thread.
+        self.listener.executor.shutdown()
+        self.listener.dedicated_listener_thread.join(timeout=10)
         self.listener.unregister()
         self.node.destroy_node()
-        self._rclpy.shutdown(context=self.context)
+        self._rclpy.try_shutdown()
 
 
 @pytest.fixture
@@ -107,11 +110,8 @@ NODE_RUNS: dict[str, tuple[str, ...]] = {
     'odom_tf_broadcaster': (),
     'point_transformer': (),
     'robot_state_publisher': ('--ros-args', '-p', f'urdf_file:={URDF / "example_revolute.urdf"}'),
-    'joint_state_publisher': (
-        '--ros-args',
-        '-p',
-        f'robot_description:={(URDF / "example_revolute.urdf").read_text(encoding="utf-8")}',
-    ),
+    # joint_state_publisher's file argument (upstream's form; it also reads /robot_description).
+    'joint_state_publisher': (str(URDF / 'example_revolute.urdf'),),
 }
 
 
@@ -132,7 +132,7 @@ TOOL_RUNS: dict[str, tuple[tuple[str, ...], str]] = {
     # executable: (arguments, a line that must be printed); a static a -> b is being published.
     'tf_echo': (('a', 'b'), '- Translation: [1.000, 2.000, 3.000]'),
     'tf2_echo': (('a', 'b'), '- Translation: [1.000, 2.000, 3.000]'),
-    'view_frames': (('--wait-time', '2'), 'frames_'),
+    'view_frames': (('--wait-time', '2'), ''),
     'tf_monitor': (('a', 'b'), 'RESULTS: for a to b'),
     'tf_doctor': (('-t', '2'), ''),
     'tf_saver': (('-t', '2', '-o', 'snapshot.yaml'), ''),
@@ -178,7 +178,7 @@ def test_ros2_run_of_each_tool_does_its_job(
         assert any(expected in line for line in lines), output
     if executable == 'view_frames':
         assert list(tmp_path.glob('frames_*.gv')), output
-        assert 'a -> b' in next(tmp_path.glob('frames_*.gv')).read_text(encoding='utf-8')
+        assert '"a" -> "b"' in next(tmp_path.glob('frames_*.gv')).read_text(encoding='utf-8')
     if executable == 'tf_saver':
         assert 'a' in (tmp_path / 'snapshot.yaml').read_text(encoding='utf-8')
 
@@ -250,13 +250,10 @@ def test_real_tf2_ros_listener_receives_robot_state_publisher(
     jazzy_env: dict[str, str], real_tf2: RealTf2Listener
 ) -> None:
     """Our robot_state_publisher + joint_state_publisher on the course URDF, seen by tf2_ros."""
-    urdf = (URDF / 'example_revolute.urdf').read_text(encoding='utf-8')
-    rsp = ['ros2', 'run', 'tf_demo', 'robot_state_publisher', '--ros-args']
-    jsp = ['ros2', 'run', 'tf_demo', 'joint_state_publisher', '--ros-args']
-    with (
-        started([*rsp, '-p', f'robot_description:={urdf}'], jazzy_env),
-        started([*jsp, '-p', f'robot_description:={urdf}'], jazzy_env),
-    ):
+    urdf = URDF / 'example_revolute.urdf'
+    rsp = ['ros2', 'run', 'tf_demo', 'robot_state_publisher', '--ros-args', '-p']
+    jsp = ['ros2', 'run', 'tf_demo', 'joint_state_publisher', str(urdf)]
+    with started([*rsp, f'urdf_file:={urdf}'], jazzy_env), started(jsp, jazzy_env):
         frames: set[str] = set()
 
         def all_frames() -> bool:

@@ -150,6 +150,54 @@ def test_params_file_wildcards_match_node_names(tmp_path: Path) -> None:
     assert set(parsed.parameter_overrides('/other/talker')) == {'a', 'c'}
 
 
+TAGGED_PARAMS = (
+    '/**:\n  ros__parameters:\n'
+    '    translation: !!python/tuple [0.5, 0.0, 0.25]\n'
+    '    count: !custom 5\n'
+    '    label: !!str 5\n'
+    '    flags: !!python/tuple [true, false]\n'
+)
+
+
+def _tagged_overrides(tmp_path: Path) -> dict[str, object]:
+    params = tmp_path / 'tagged.yaml'
+    params.write_text(TAGGED_PARAMS, encoding='utf-8')
+    parsed = parse_ros_args(['--ros-args', '--params-file', str(params)])
+    return {name: p.value for name, p in parsed.parameter_overrides('/n').items()}
+
+
+def test_params_file_tags_are_ignored_but_str(tmp_path: Path) -> None:
+    """rcl ignores YAML tags but !!str: launch_ros writes lists as !!python/tuple sequences."""
+    values = _tagged_overrides(tmp_path)
+    assert values == {
+        'translation': [0.5, 0.0, 0.25],
+        'count': 5,
+        'label': '5',
+        'flags': [True, False],
+    }
+
+
+@pytest.mark.rclpy_world
+def test_params_file_tags_read_as_the_real_rcl_reads_them(tmp_path: Path, ros: None) -> None:
+    """The same params file through the real rcl: every value and type is ours."""
+    from tf_demo import transport
+
+    ours = _tagged_overrides(tmp_path)
+    node = transport.create_node(
+        'n',
+        cli_args=['--ros-args', '--params-file', str(tmp_path / 'tagged.yaml')],
+        automatically_declare_parameters_from_overrides=True,
+    )
+    try:
+        real = {name: node.get_parameter(name).value for name in ours}
+    finally:
+        node.destroy_node()
+    assert {k: list(v) if isinstance(v, (list, tuple)) else v for k, v in real.items()} == ours
+    assert {k: type(v) for k, v in real.items() if not isinstance(v, list)} == {
+        k: type(v) for k, v in ours.items() if not isinstance(v, list)
+    }
+
+
 @pytest.mark.parametrize(
     ('argv', 'message'),
     [
@@ -166,7 +214,11 @@ def test_params_file_wildcards_match_node_names(tmp_path: Path) -> None:
         (['--params-file'], "Couldn't parse trailing --params-file flag. No file path provided."),
         (['--params-file', '/nonexistent/p.yaml'], 'Error opening YAML file'),
         (['--log-level'], "Couldn't parse trailing log level flag: '--log-level'."),
-        (['--log-level', 'loud'], "Unknown log severity 'loud'"),
+        (
+            ['--log-level', 'loud'],
+            "Couldn't parse log level: '--log-level loud'. "
+            'Error: Argument does not use a valid severity level',
+        ),
         (['-e', 'relative'], 'must be fully qualified'),
         (['--unknown', 'x'], "Found unknown ROS arguments: ['--unknown', 'x']"),
     ],

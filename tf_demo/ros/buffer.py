@@ -692,23 +692,18 @@ class Buffer(BufferCore):
 
 def _create_frames_service(node: Any, buffer: Buffer) -> Any:
     """
-    Offer tf2_ros's ``tf2_frames`` service (``tf2_msgs/srv/FrameGraph``) when the world has it.
+    Offer tf2_ros's ``tf2_frames`` service (``tf2_msgs/srv/FrameGraph``) as tf2_ros does.
 
-    ``ros2 run tf2_tools view_frames`` calls it. A standalone node offers it with the
-    standalone world's ``FrameGraph``; nodes without ``create_service`` or without the service
-    type simply do not offer it.
+    ``ros2 run tf2_tools view_frames`` calls it. The service type is the world's (rclpy's
+    ``tf2_msgs.srv`` inside ROS 2, ``tf_demo.msgs`` standalone); nodes without
+    ``create_service`` simply do not offer it.
     """
     create_service = getattr(node, 'create_service', None)
     if create_service is None:
         return None
-    try:
-        import importlib
+    from tf_demo.transport.messages import service_module
 
-        standalone = type(node).__module__.startswith('tf_demo.')
-        module = 'tf_demo.msgs.tf2_msgs' if standalone else 'tf2_msgs.srv'
-        frame_graph = importlib.import_module(module).FrameGraph
-    except (ImportError, AttributeError):
-        return None
+    frame_graph = service_module('tf2_msgs').FrameGraph
 
     def answer(_request: Any, _response: Any) -> Any:
         return frame_graph.Response(frame_yaml=buffer.all_frames_as_yaml())

@@ -33,6 +33,7 @@ __all__ = [
     'nav_msgs',
     'rosgraph_msgs',
     'sensor_msgs',
+    'service_module',
     'std_msgs',
     'tf2_msgs',
 ]
@@ -42,6 +43,13 @@ def message_module(package: str) -> ModuleType:
     """Return the message module of ROS package ``package`` in the selected world."""
     if rclpy_world():
         return importlib.import_module(f'{package}.msg')
+    return importlib.import_module(f'tf_demo.msgs.{package}')
+
+
+def service_module(package: str) -> ModuleType:
+    """Return the service module of ROS package ``package`` in the selected world."""
+    if rclpy_world():
+        return importlib.import_module(f'{package}.srv')
     return importlib.import_module(f'tf_demo.msgs.{package}')
 
 

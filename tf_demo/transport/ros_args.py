@@ -42,7 +42,6 @@ import re
 import threading
 from typing import Any
 
-from tf_demo.transport.logging import get_logging_severity_from_string
 from tf_demo.transport.logging import LoggingSeverity
 from tf_demo.transport.parameters import Parameter
 import yaml
@@ -340,6 +339,26 @@ _YamlLoader.yaml_implicit_resolvers = {
 }
 
 
+def _ignore_tag(loader: _YamlLoader, _suffix: str, node: yaml.Node) -> Any:
+    """
+    Read a node whose tag the safe loader does not know as if it had no tag, as rcl does.
+
+    rcl's parser ignores tags but ``!!str``: ``launch_ros`` writes list parameters as
+    ``!!python/tuple [...]``, which rcl reads as a plain sequence.
+    """
+    if isinstance(node, yaml.SequenceNode):
+        return loader.construct_sequence(node, deep=True)
+    if isinstance(node, yaml.MappingNode):
+        return loader.construct_mapping(node, deep=True)
+    style = getattr(node, 'style', None)
+    plain = style is None
+    tag = loader.resolve(yaml.ScalarNode, node.value, (plain, not plain))  # type: ignore[no-untyped-call]
+    return loader.construct_object(yaml.ScalarNode(tag, node.value, style=style))
+
+
+_YamlLoader.add_multi_constructor('', _ignore_tag)
+
+
 def parse_param_value(text: str) -> Any:
     """
     Type a ``-p`` value as rcl does: bool, int, double, string or a homogeneous array.
@@ -474,10 +493,20 @@ def _parse_log_level_rule(rule: str) -> tuple[str | None, LoggingSeverity]:
         if not logger:
             msg = 'Logger name is empty'
             raise _RuleError(msg)
-    try:
-        return logger, get_logging_severity_from_string(level_text)
-    except ValueError as error:
-        raise _RuleError(str(error)) from None
+    return logger, _rcutils_severity(level_text)
+
+
+_RCUTILS_SEVERITIES = {'UNSET': 0, 'DEBUG': 10, 'INFO': 20, 'WARN': 30, 'WARNING': 30}
+_RCUTILS_SEVERITIES.update(ERROR=40, FATAL=50)
+
+
+def _rcutils_severity(name: str) -> LoggingSeverity:
+    """Return the severity of an rcutils name (any case; ``warning`` is WARN) or rcl's error."""
+    level = _RCUTILS_SEVERITIES.get(name.upper())
+    if level is None:
+        msg = 'Argument does not use a valid severity level'
+        raise _RuleError(msg)
+    return LoggingSeverity(level)
 
 
 def _parse_enclave(value: str) -> str:
