@@ -112,7 +112,7 @@ if [ -f "$jazzy_setup" ]; then
   /usr/bin/python3 -c 'import numpy; print(f"numpy=={numpy.__version__}")' >"$constraints"
   echo "== pip install (ROS world): yourdfpy xacro pytest-timeout ruff mypy colcon"
   "$jazzy_venv/bin/python" -m pip install "${pip_quiet[@]}" -c "$constraints" \
-    'yourdfpy>=0.0.56' xacro 'pytest>=7,<8' pytest-timeout 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
+    'yourdfpy>=0.0.56' xacro 'pytest>=7,<8' pytest-timeout 'hypothesis>=6.80' 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
     colcon-common-extensions
   echo "== ROS world: colcon build + colcon test on $(dirname "$jazzy_setup")"
   (

@@ -42,6 +42,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 import json
 import math
+import os
 from pathlib import Path
 import random
 import re
@@ -74,11 +75,20 @@ BATCH = 250
 Result = dict[str, Any]
 
 
+# Debian's ROS 1 packages, not a sourced ROS 2 (whose tf2_py and geometry_msgs would shadow them).
+_ORACLE_ENV = {
+    key: value
+    for key, value in os.environ.items()
+    if key not in {'PYTHONPATH', 'AMENT_PREFIX_PATH', 'LD_LIBRARY_PATH', 'ROS_DISTRO'}
+}
+
+
 def _oracle_available() -> bool:
     """Tell whether ``/usr/bin/python3`` can import ``tf2_py``."""
     try:
         done = subprocess.run(
             [SYSTEM_PYTHON, '-c', 'import tf2_py, rospy, geometry_msgs.msg'],
+            env=_ORACLE_ENV,
             capture_output=True,
             timeout=60,
             check=False,
@@ -95,6 +105,7 @@ class Oracle:
         """Start the oracle process."""
         self._process = subprocess.Popen(
             [SYSTEM_PYTHON, str(ORACLE_SCRIPT)],
+            env=_ORACLE_ENV,
             stdin=subprocess.PIPE,
             stdout=subprocess.PIPE,
             text=True,

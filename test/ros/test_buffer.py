@@ -25,13 +25,13 @@ from tf_demo.core.exceptions import ExtrapolationException
 from tf_demo.core.exceptions import ForwardExtrapolationException
 from tf_demo.core.exceptions import LookupException
 from tf_demo.core.exceptions import TimeoutException
-from tf_demo.msgs import builtin_interfaces
-from tf_demo.msgs import geometry_msgs
 from tf_demo.ros import Buffer
 from tf_demo.ros import TypeException
 from tf_demo.transport.clock import Duration
 from tf_demo.transport.clock import ROSClock
 from tf_demo.transport.clock import Time
+from tf_demo.transport.messages import builtin_interfaces
+from tf_demo.transport.messages import geometry_msgs
 
 S = 1_000_000_000
 HANG_GUARD_S = 10.0

@@ -39,6 +39,7 @@ from typing import TypeVar
 from hypothesis import HealthCheck
 from hypothesis import settings
 from hypothesis import strategies as st
+from tf_demo.core import math3d
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
@@ -228,7 +229,10 @@ def _quaternion(choose: Chooser, special_set: int = 0) -> Quat:
 
     A link uses one special set: ``(0, 0, 0, -1)`` (stored as given by ROS 1, as ``(0, 0, 0, 1)``
     by Jazzy: spec Appendix, "quaternion sign") never meets a half turn on the same link, because
-    slerp between exactly opposite rotations (dot product 0) picks its arc from the signs.
+    slerp between exactly opposite rotations (dot product 0) picks its arc from the signs. For
+    the same reason the other quaternions come with the sign Jazzy stores (its matrix route):
+    exact values such as ``(-0, -0, -1, 0)`` next to ``(0, 0, 0, 1)`` would otherwise interpolate
+    along opposite arcs in ROS 1 and in Jazzy (checked against the real Jazzy's tf2_py).
     """
     if _chance(choose, 10):
         return _pick(choose, _SPECIAL_QUATERNIONS[special_set])
@@ -240,7 +244,11 @@ def _quaternion(choose: Chooser, special_set: int = 0) -> Quat:
             choose.real(-1.0, 1.0),
         )
         if _norm_is_usable(q):
-            return _normalised(q)
+            unit = _normalised(q)
+            stored = math3d.canonical_quat(unit)
+            if sum(a * b for a, b in zip(unit, stored, strict=True)) < 0:
+                return (-unit[0], -unit[1], -unit[2], -unit[3])
+            return unit
 
 
 def _translation(choose: Chooser) -> list[float]:
