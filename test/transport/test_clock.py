@@ -45,7 +45,7 @@ def test_time_holds_integer_nanoseconds_from_seconds_and_nanoseconds() -> None:
     t = Time(seconds=1.5, nanoseconds=7, clock_type=ROS)
     assert t.nanoseconds == 1_500_000_007
     assert t.seconds_nanoseconds() == (1, 500_000_007)
-    assert t.clock_type is ROS
+    assert t.clock_type == ROS
     assert repr(t) == 'Time(nanoseconds=1500000007, clock_type=ROS_TIME)'
 
 
@@ -70,7 +70,7 @@ def test_time_arithmetic_with_durations() -> None:
     """Time ± Duration is a Time of the same clock; Time - Time is a (signed) Duration."""
     t = Time(seconds=10, clock_type=ROS)
     assert (t + Duration(seconds=2)).nanoseconds == 12 * 10**9
-    assert (Duration(seconds=2) + t).clock_type is ROS
+    assert (Duration(seconds=2) + t).clock_type == ROS
     assert (t - Duration(seconds=3)).nanoseconds == 7 * 10**9
     assert (Time(seconds=1, clock_type=ROS) - t) == Duration(seconds=-9)
     with pytest.raises(ValueError, match='Subtraction leads to negative time'):
@@ -110,9 +110,11 @@ def test_duration_is_signed_and_bounded_to_int64() -> None:
         Duration(nanoseconds=-(2**63) - 1)
     assert Duration(nanoseconds=-(2**63)).nanoseconds == -(2**63)
     assert str(Infinite) == 'Infinite'
-    assert Duration(seconds=2) * 3 == Duration(seconds=6)
-    assert Duration(seconds=2) * 0.25 == Duration(seconds=0.5)
-    assert Duration(seconds=1) * float('inf') == Infinite
+    # rclpy Jazzy's Duration has no arithmetic of its own (Time +/- Duration does the work)
+    with pytest.raises(TypeError):
+        _ = Duration(seconds=2) * 3  # type: ignore[operator]
+    with pytest.raises(TypeError):
+        _ = Duration(seconds=2) + Duration(seconds=1)  # type: ignore[operator]
 
 
 def test_messages_round_trip_with_divmod_semantics() -> None:
@@ -124,7 +126,7 @@ def test_messages_round_trip_with_divmod_semantics() -> None:
     assert isinstance(stamp, builtin_interfaces.Time)
     assert (stamp.sec, stamp.nanosec) == (3, 4)
     back = Time.from_msg(stamp)
-    assert back.clock_type is ROS
+    assert back.clock_type == ROS
     assert back == Time(seconds=3, nanoseconds=4, clock_type=ROS)
     with pytest.raises(TypeError, match=r'Must pass a builtin_interfaces\.msg\.Time object'):
         Time.from_msg(object())
@@ -135,7 +137,7 @@ def test_clock_with_ros_time_type_is_a_ros_clock() -> None:
     assert isinstance(Clock(clock_type=ROS), ROSClock)
     assert isinstance(ROSClock(), ROSClock)
     assert not isinstance(Clock(), ROSClock)
-    assert Clock(clock_type=ClockType.STEADY_TIME).now().clock_type is ClockType.STEADY_TIME
+    assert Clock(clock_type=ClockType.STEADY_TIME).now().clock_type == ClockType.STEADY_TIME
 
 
 def test_ros_clock_reports_the_override_only_while_ros_time_is_active() -> None:
@@ -161,7 +163,8 @@ def test_jump_callbacks_fire_as_rcl_fires_them() -> None:
     changes: list = []
     backward: list = []
     pre_calls: list = []
-    clock.create_jump_callback(
+    # Keep every handle: under rclpy a dropped JumpHandle leaves rcl a dangling callback.
+    changes_handle = clock.create_jump_callback(
         JumpThreshold(min_forward=None, min_backward=None, on_clock_change=True),
         post_callback=changes.append,
     )
@@ -181,7 +184,8 @@ def test_jump_callbacks_fire_as_rcl_fires_them() -> None:
     clock.set_ros_time_override(Time(seconds=1, clock_type=ROS))
     assert len(backward) == 1
     source.ros_time_is_active = False
-    assert changes[-1].clock_change is ClockChange.ROS_TIME_DEACTIVATED
+    assert changes[-1].clock_change == ClockChange.ROS_TIME_DEACTIVATED
+    changes_handle.unregister()
 
 
 def test_jump_threshold_validates_its_limits() -> None:
@@ -194,7 +198,7 @@ def test_jump_threshold_validates_its_limits() -> None:
         JumpThreshold(min_forward=None, min_backward=None, on_clock_change=False)
 
 
-def test_sleep_until_waits_for_sim_time_to_arrive() -> None:
+def test_sleep_until_waits_for_sim_time_to_arrive(ros: None) -> None:
     """sleep_until on an active ROS clock returns once an override reaches the target."""
     clock = ROSClock()
     source = sim_time_source(clock)
@@ -216,7 +220,7 @@ def test_sleep_until_waits_for_sim_time_to_arrive() -> None:
     assert result == [True]
 
 
-def test_sleep_until_returns_false_when_ros_time_is_deactivated() -> None:
+def test_sleep_until_returns_false_when_ros_time_is_deactivated(ros: None) -> None:
     """Deactivating ROS time ends a sim-time sleep with False, as rclpy documents."""
     clock = ROSClock()
     source = sim_time_source(clock)
@@ -231,13 +235,13 @@ def test_sleep_until_returns_false_when_ros_time_is_deactivated() -> None:
     assert result == [False]
 
 
-def test_sleep_until_rejects_another_clock_type() -> None:
+def test_sleep_until_rejects_another_clock_type(ros: None) -> None:
     """A target time of another clock type raises ValueError, as in rclpy."""
     with pytest.raises(ValueError, match="until's clock type does not match"):
         ROSClock().sleep_until(Time(seconds=1))
 
 
-def test_sleep_for_on_the_system_clock_reaches_its_target() -> None:
+def test_sleep_for_on_the_system_clock_reaches_its_target(ros: None) -> None:
     """sleep_for returns True after the clock has advanced by at least the duration."""
     clock = Clock()
     start = clock.now()

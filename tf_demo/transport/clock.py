@@ -32,7 +32,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from enum import IntEnum
-import math
 import sys
 import threading
 import time as _time
@@ -112,28 +111,6 @@ class Duration:
         if self._nanoseconds == _INT64_LIMIT - 1:
             return 'Infinite'
         return f'{self._nanoseconds} nanoseconds'
-
-    def __add__(self, other: object) -> Duration:
-        if isinstance(other, Duration):
-            return Duration(nanoseconds=self._nanoseconds + other._nanoseconds)
-        return NotImplemented
-
-    def __sub__(self, other: object) -> Duration:
-        if isinstance(other, Duration):
-            return Duration(nanoseconds=self._nanoseconds - other._nanoseconds)
-        return NotImplemented
-
-    def __mul__(self, other: object) -> Duration:
-        if isinstance(other, int) and not isinstance(other, bool):
-            return Duration(nanoseconds=self._nanoseconds * other)
-        if isinstance(other, float):
-            if math.isnan(other):
-                msg = "Can't multiply duration with nan"
-                raise ValueError(msg)
-            if other == math.inf:
-                return Infinite
-            return Duration(nanoseconds=int(self._nanoseconds * other))
-        return NotImplemented
 
     def __eq__(self, other: object) -> bool:
         if isinstance(other, Duration):
