@@ -72,6 +72,7 @@ def test_ruff_format_is_clean() -> None:
 
 
 @pytest.mark.linter
+@pytest.mark.standalone  # the type check needs the standalone world's packages (cyclonedds)
 def test_mypy_is_clean() -> None:
     """Mypy (strict for core and urdf, see pyproject.toml) reports no error in the package."""
     result = _run('mypy', '--no-incremental', 'tf_demo')

@@ -42,8 +42,8 @@ import rclpy.utilities
 
 init = rclpy.init
 shutdown = rclpy.shutdown
-try_shutdown = rclpy.try_shutdown
-ok = rclpy.ok
+try_shutdown = rclpy.utilities.try_shutdown
+ok = rclpy.utilities.ok
 spin = rclpy.spin
 spin_once = rclpy.spin_once
 create_node = rclpy.create_node
