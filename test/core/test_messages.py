@@ -120,10 +120,26 @@ def test_inf_minus_inf_translation_is_not_a_nan():
     assert lines == []
 
 
-def test_default_log_goes_to_stdlib_logger(caplog):
+class _Collect(logging.Handler):
+    def __init__(self) -> None:
+        super().__init__(logging.ERROR)
+        self.records: list[logging.LogRecord] = []
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.records.append(record)
+
+
+def test_default_log_goes_to_stdlib_logger():
     """Without a log function the texts go to the 'tf_demo.core' logger."""
+    # A handler on the logger itself: inside ROS 2, launch's logging setup stops propagation
+    # to the root logger that pytest's caplog listens on.
     core = BufferCore()
-    with caplog.at_level(logging.ERROR, logger='tf_demo.core'):
+    logger = logging.getLogger('tf_demo.core')
+    collect = _Collect()
+    logger.addHandler(collect)
+    try:
         core.set_transform('x', 'x', S, (0, 0, 0), IDENTITY, 'me')
-    assert caplog.records[0].name == 'tf_demo.core'
-    assert caplog.records[0].getMessage().startswith('TF_SELF_TRANSFORM: Ignoring transform')
+    finally:
+        logger.removeHandler(collect)
+    assert collect.records[0].name == 'tf_demo.core'
+    assert collect.records[0].getMessage().startswith('TF_SELF_TRANSFORM: Ignoring transform')

@@ -95,6 +95,7 @@ def test_requesting_rclpy_without_it_is_a_clear_error() -> None:
     assert 'BackendError: TF_DEMO_BACKEND=rclpy but rclpy cannot be imported' in completed.stderr
 
 
+@pytest.mark.standalone  # runs the DDS backend in a child process
 def test_dds_world_node_api_comes_from_the_dds_backend() -> None:
     """In the DDS world Node, executors and message modules are the standalone ones."""
     code = (

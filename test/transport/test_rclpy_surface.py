@@ -758,6 +758,7 @@ def test_field_checker_rejects_what_rclpys_generated_setters_reject() -> None:
         assert rclpy_field_violations(msg) == [], repr(msg)
 
 
+@pytest.mark.standalone  # under rclpy, rclpy's own setters check the fields
 def test_transform_helpers_give_rclpy_valid_messages_even_from_ints_and_numpy() -> None:
     """make_transform_stamped / fill_transform_stamped convert ints and numpy scalars."""
     from tf_demo.ros.node_helpers import make_transform_stamped
@@ -806,6 +807,7 @@ def test_odometry_and_geometry_outputs_are_rclpy_valid() -> None:
         assert result.header.frame_id == 'map'
 
 
+@pytest.mark.standalone  # under rclpy, rclpy's own setters check the fields
 def test_buffer_lookup_result_is_rclpy_valid() -> None:
     """Buffer.lookup_transform returns a TransformStamped that rclpy would accept."""
     from tf_demo.ros import Buffer
@@ -930,6 +932,7 @@ def test_rclpy_backend_is_a_pure_pass_through() -> None:
     assert aliases['init'] == 'rclpy.init'
 
 
+@pytest.mark.standalone  # imports the DDS backend
 def test_both_backends_offer_the_names_the_package_re_exports() -> None:
     """Names tf_demo.transport forwards exist in rclpy_backend and in dds_backend alike."""
     from tf_demo import transport
@@ -1033,6 +1036,7 @@ def test_the_backend_is_resolved_once_per_process(monkeypatch: pytest.MonkeyPatc
         backend.backend_name.cache_clear()
 
 
+@pytest.mark.standalone  # runs the DDS backend in a child process
 def test_explicit_dds_never_imports_an_installed_rclpy(importable_rclpy: Path) -> None:
     """TF_DEMO_BACKEND=dds keeps rclpy (and its signal handlers) out of the process."""
     code = (
@@ -1284,7 +1288,7 @@ def test_a_stop_signal_while_the_node_starts_ends_cleanly(
 #: on purpose (the standalone backend refuses BEST_AVAILABLE policies).
 RCLPY_QOS_PRESETS = [
     'UNKNOWN', 'DEFAULT', 'SYSTEM_DEFAULT', 'SENSOR_DATA', 'SERVICES_DEFAULT', 'PARAMETERS',
-    'PARAMETER_EVENTS', 'ACTION_STATUS_DEFAULT',
+    'PARAMETER_EVENTS', 'ACTION_STATUS_DEFAULT', 'BEST_AVAILABLE',
 ]  # fmt: skip
 
 

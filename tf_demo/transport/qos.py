@@ -51,6 +51,7 @@ __all__ = [
     'StaticBroadcasterQoS',
     'StaticListenerQoS',
     'qos_profile_action_status_default',
+    'qos_profile_best_available',
     'qos_profile_default',
     'qos_profile_parameter_events',
     'qos_profile_parameters',
@@ -388,14 +389,27 @@ qos_profile_action_status_default = QoSProfile(
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
 
+# rmw's RMW_QOS_DEADLINE_BEST_AVAILABLE and RMW_QOS_LIVELINESS_LEASE_DURATION_BEST_AVAILABLE.
+_BEST_AVAILABLE_DURATION_NS = 2**63 - 2
+
+qos_profile_best_available = QoSProfile(
+    history=HistoryPolicy.KEEP_LAST,
+    depth=10,
+    reliability=ReliabilityPolicy.BEST_AVAILABLE,
+    durability=DurabilityPolicy.BEST_AVAILABLE,
+    deadline=Duration(nanoseconds=_BEST_AVAILABLE_DURATION_NS),
+    liveliness=LivelinessPolicy.BEST_AVAILABLE,
+    liveliness_lease_duration=Duration(nanoseconds=_BEST_AVAILABLE_DURATION_NS),
+)
+
 
 class QoSPresetProfiles(Enum):
     """
     The named presets, as rclpy's enum of the same name (same members, same order).
 
     Equal profiles are aliases, as in rclpy (e.g. ``SERVICES_DEFAULT`` is ``DEFAULT``).
-    rclpy's ``BEST_AVAILABLE`` preset is left out: the standalone backend refuses
-    BEST_AVAILABLE policies.
+    The standalone backend refuses endpoints with BEST_AVAILABLE policies (a clear error), so
+    ``BEST_AVAILABLE`` is a preset to name, not to use, there.
     """
 
     UNKNOWN = qos_profile_unknown
@@ -406,6 +420,7 @@ class QoSPresetProfiles(Enum):
     PARAMETERS = qos_profile_parameters
     PARAMETER_EVENTS = qos_profile_parameter_events
     ACTION_STATUS_DEFAULT = qos_profile_action_status_default
+    BEST_AVAILABLE = qos_profile_best_available
 
     @classmethod
     def short_keys(cls) -> list[str]:
