@@ -170,10 +170,10 @@ class QoSProfile:
     _avoid_ros_namespace_conventions: bool
 
     def __init__(self, **kwargs: Any) -> None:
-        unknown = sorted(set(kwargs) - set(_PROFILE_FIELDS))
-        if unknown:
-            msg = f'Invalid arguments passed to constructor: {unknown!r}'
-            raise TypeError(msg)
+        if set(kwargs) - set(_PROFILE_FIELDS):
+            # rclpy Jazzy asserts this (an AssertionError with this text)
+            msg = f'Invalid arguments passed to constructor: {kwargs.keys()!r}'
+            raise AssertionError(msg)
         if 'history' not in kwargs:
             if 'depth' not in kwargs:
                 raise InvalidQoSProfileException('History and/or depth settings are required.')
@@ -304,10 +304,10 @@ def _policy_value(field: str, value: object) -> int:
 
 
 def _duration_value(field: str, value: object) -> Duration:
-    """Return ``value`` when it is a Duration, or raise TypeError naming the field."""
+    """Return ``value`` when it is a Duration, else fail as rclpy's setter does (an assert)."""
     if not isinstance(value, Duration):
         msg = f'{field} must be a Duration, not {type(value).__name__}'
-        raise TypeError(msg)
+        raise AssertionError(msg)
     return value
 
 
