@@ -206,12 +206,11 @@ class QoSProfile:
 
     @depth.setter
     def depth(self, value: int) -> None:
-        if isinstance(value, bool) or not isinstance(value, int):
+        # As rclpy's setter: an int is asserted; a negative depth is refused only when an
+        # endpoint is created with it (rmw: "unsupported history depth").
+        if not isinstance(value, int):
             msg = f'depth must be an int, not {type(value).__name__}'
-            raise TypeError(msg)
-        if value < 0:
-            msg = 'history depth must be greater than or equal to zero'
-            raise ValueError(msg)
+            raise AssertionError(msg)
         self._depth = value
 
     @property
