@@ -12,9 +12,13 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Log lines in rcutils' console format, levels, and rclpy's once/skip_first/throttle options."""
+"""Log lines in rcutils' console format, levels, and rclpy's once/skip_first/throttle options.
 
-import os
+The tests run in both worlds on the world's loggers (``tf_demo.transport.logging`` names are
+rclpy's inside ROS 2) and check what rclpy and rcutils do; the processes run in the test's world.
+Only :func:`format_log_line`, the standalone world's formatter, is tested on its own.
+"""
+
 from pathlib import Path
 import re
 import subprocess
@@ -33,31 +37,41 @@ REPO_ROOT = Path(__file__).resolve().parents[2]
 LINE = re.compile(r'^\[(DEBUG|INFO|WARN|ERROR|FATAL)\] \[(\d+)\.(\d{9})\] \[([^\]]+)\]: (.*)$')
 
 
-def test_default_format_pads_nanoseconds_to_nine_digits() -> None:
-    """The rcutils default line is [LEVEL] [sec.nnnnnnnnn] [name]: message."""
+@pytest.mark.standalone
+def test_default_format_pads_seconds_and_nanoseconds_as_rcutils() -> None:
+    """The rcutils default line is [LEVEL] [ssssssssss.nnnnnnnnn] [name]: message."""
     line = format_log_line(LoggingSeverity.WARN, 'ns.talker', 'hello', 1_700_000_000_000_000_042)
     assert line == '[WARN] [1700000000.000000042] [ns.talker]: hello'
+    # rcutils prints "%.10" PRId64 ".%.9" PRId64: at least ten digits of seconds
+    line = format_log_line(LoggingSeverity.INFO, 'n', 'm', 5_000_000_123)
+    assert line == '[INFO] [0000000005.000000123] [n]: m'
 
 
+@pytest.mark.standalone
 def test_custom_output_format_tokens() -> None:
-    """RCUTILS_CONSOLE_OUTPUT_FORMAT tokens are substituted; unknown ones are kept."""
+    """Tokens are substituted as rcutils does; of an unknown one only the '{' is copied."""
     line = format_log_line(
         LoggingSeverity.ERROR,
         'n',
         'm',
         5_000_000_123,
-        output_format='{severity}|{time_as_nanoseconds}|{name}|{message}|{line_number}|{nope}',
+        output_format='{severity}|{time_as_nanoseconds}|{name}|{message}|{line_number}|{nope}'
+        '|{x{name}}',
         line_number=12,
     )
-    assert line == 'ERROR|5000000123|n|m|12|{nope}'
+    assert line == 'ERROR|0000000005000000123|n|m|12|{nope}|{xn}'
 
 
-def test_severity_names_parse_case_insensitively() -> None:
-    """Level names are case-insensitive; 'warning' means WARN; unknown names raise."""
+def test_severity_names_parse_as_rcutils_parses_them() -> None:
+    """Level names are ASCII case-insensitive; nothing else ('warning', spaces) is a level."""
     assert get_logging_severity_from_string('Debug') is LoggingSeverity.DEBUG
-    assert get_logging_severity_from_string('WARNING') is LoggingSeverity.WARN
-    with pytest.raises(ValueError, match="Unknown log severity 'verbose'"):
-        get_logging_severity_from_string('verbose')
+    assert get_logging_severity_from_string('WARN') is LoggingSeverity.WARN
+    assert get_logging_severity_from_string('unset') is LoggingSeverity.UNSET
+    for unknown in ('WARNING', 'verbose', ' info', ''):
+        with pytest.raises(RuntimeError, match=r'^Failed to get severity name$'):
+            get_logging_severity_from_string(unknown)
+    with pytest.raises(TypeError, match='incompatible function arguments'):
+        get_logging_severity_from_string(3)  # type: ignore[arg-type]
 
 
 def test_child_loggers_inherit_their_parents_level() -> None:
@@ -86,6 +100,8 @@ def test_options_once_skip_first_and_throttle(capfd: pytest.CaptureFixture[str])
     assert messages == ['once 0', 'throttle 0', 'skip 1', 'skip 2']
     with pytest.raises(TypeError, match='not one of the recognized logging options'):
         logger.info('x', every_n=3)
+    logger.set_level(LoggingSeverity.WARN)
+    assert logger.info('x', every_n=3) is False  # below the level the options are not checked
 
 
 SCRIPT = """
@@ -104,14 +120,18 @@ for name in ('talker', 'listener'):
 """
 
 
-def run_logging_script(tmp_path: Path, *ros_args: str, **env: str) -> list[str]:
-    script = tmp_path / 'log.py'
-    script.write_text(SCRIPT, encoding='utf-8')
-    environment = dict(os.environ, PYTHONPATH=str(REPO_ROOT), TF_DEMO_BACKEND='dds', **env)
+def run_logging_script(
+    tmp_path: Path, world_env: dict[str, str], *ros_args: str, script: str = SCRIPT, **env: str
+) -> list[str]:
+    """Run ``script`` in this run's world with ``--ros-args ros_args``; return its stderr lines."""
+    path = tmp_path / 'log.py'
+    path.write_text(script, encoding='utf-8')
+    environment = dict(world_env)  # PYTHONPATH: the source tree, then the world's own
     environment.pop('RCUTILS_CONSOLE_OUTPUT_FORMAT', None)
+    environment.pop('RCUTILS_LOGGING_USE_STDOUT', None)
     environment.update(env)
     completed = subprocess.run(
-        [sys.executable, str(script), '--ros-args', *ros_args],
+        [sys.executable, str(path), '--ros-args', *ros_args],
         env=environment,
         capture_output=True,
         text=True,
@@ -122,9 +142,11 @@ def run_logging_script(tmp_path: Path, *ros_args: str, **env: str) -> list[str]:
     return completed.stderr.splitlines()
 
 
-def test_process_logs_to_stderr_in_rcutils_format(tmp_path: Path) -> None:
+def test_process_logs_to_stderr_in_rcutils_format(
+    tmp_path: Path, world_env: dict[str, str]
+) -> None:
     """A real process writes INFO and above to stderr, one line each, in rclpy's format."""
-    lines = run_logging_script(tmp_path, RCUTILS_COLORIZED_OUTPUT='0')
+    lines = run_logging_script(tmp_path, world_env, RCUTILS_COLORIZED_OUTPUT='0')
     parsed = [LINE.match(line) for line in lines]
     assert all(parsed), lines
     assert [(m.group(1), m.group(4), m.group(5)) for m in parsed if m][:4] == [
@@ -136,10 +158,13 @@ def test_process_logs_to_stderr_in_rcutils_format(tmp_path: Path) -> None:
     assert len(lines) == 8
 
 
-def test_log_level_argument_sets_default_and_per_logger_levels(tmp_path: Path) -> None:
+def test_log_level_argument_sets_default_and_per_logger_levels(
+    tmp_path: Path, world_env: dict[str, str]
+) -> None:
     """--log-level error hides INFO/WARN; --log-level talker:=debug shows talker's DEBUG."""
     lines = run_logging_script(
         tmp_path,
+        world_env,
         '--log-level',
         'error',
         '--log-level',
@@ -158,12 +183,49 @@ def test_log_level_argument_sets_default_and_per_logger_levels(tmp_path: Path) -
     ]
 
 
-def test_colorized_output_wraps_lines_in_rcutils_colors(tmp_path: Path) -> None:
+def test_colorized_output_wraps_lines_in_rcutils_colors(
+    tmp_path: Path, world_env: dict[str, str]
+) -> None:
     """RCUTILS_COLORIZED_OUTPUT=1 colours WARN yellow and resets at the end of the line."""
-    lines = run_logging_script(tmp_path, RCUTILS_COLORIZED_OUTPUT='1')
+    lines = run_logging_script(tmp_path, world_env, RCUTILS_COLORIZED_OUTPUT='1')
     warn = next(line for line in lines if 'warn from talker' in line)
     assert warn.startswith('\x1b[33m[WARN] [')
     assert warn.endswith('\x1b[0m')
+
+
+FORMAT_SCRIPT = """
+import sys
+from tf_demo.transport import init
+from tf_demo.transport.logging import get_logger
+init(sys.argv)
+def emit():
+    get_logger('fmt').warning('hello')
+emit()
+"""
+
+
+def test_output_format_tokens_escapes_and_unknown_tokens(
+    tmp_path: Path, world_env: dict[str, str]
+) -> None:
+    """RCUTILS_CONSOLE_OUTPUT_FORMAT: rcutils' tokens and escapes; of '{x' only '{' is kept."""
+    fields = (
+        '{severity}|{name}|{message}|{function_name}|{line_number}|{time}|{time_as_nanoseconds}'
+        '|{nope}|{x{name}}|a\\tb\\x1bc'
+    )  # (not an unknown escape such as \\q: rcutils copies garbage after one)
+    [line] = run_logging_script(
+        tmp_path,
+        world_env,
+        script=FORMAT_SCRIPT,
+        RCUTILS_COLORIZED_OUTPUT='0',
+        RCUTILS_CONSOLE_OUTPUT_FORMAT=fields,
+    )
+    severity, name, message, function, number, seconds, nanoseconds, *rest = line.split('|')
+    assert (severity, name, message, function, number) == ('WARN', 'fmt', 'hello', 'emit', '7')
+    assert re.fullmatch(r'\d{10}\.\d{9}', seconds), seconds
+    assert re.fullmatch(r'\d{19}', nanoseconds), nanoseconds
+    whole, fraction = divmod(int(nanoseconds), 1_000_000_000)
+    assert seconds == f'{whole:010d}.{fraction:09d}'  # the same stamp, nanoseconds padded
+    assert rest == ['{nope}', '{xfmt}', 'a\tb\x1bc']
 
 
 def test_filters_are_not_consumed_by_calls_below_the_level(
@@ -218,13 +280,15 @@ def test_two_calls_on_one_line_are_two_call_sites() -> None:
     assert logger.warning('a') and logger.error('b')  # noqa: PT018 - one line on purpose
 
 
-def test_the_rule_applies_below_the_level_too() -> None:
-    """The call-site context is made before the level check, as in rclpy."""
+def test_a_call_below_the_level_leaves_no_call_site_state() -> None:
+    """rclpy checks the level first: a call below it neither fixes the call site nor checks."""
     logger = get_logger('test_logging_below_level')
     logger.set_level(LoggingSeverity.ERROR)
-    assert not _log_at(logger, LoggingSeverity.DEBUG, 'hidden')
+    assert not _log_at(logger, LoggingSeverity.DEBUG, 'hidden', once=True)
+    assert _log_at(logger, LoggingSeverity.ERROR, 'shown')  # another severity and no once: fine
+    assert not _log_at(logger, LoggingSeverity.DEBUG, 'hidden again', once=True)
     with pytest.raises(ValueError, match='severity cannot be changed'):
-        _log_at(logger, LoggingSeverity.ERROR, 'shown')
+        _log_at(logger, LoggingSeverity.FATAL, 'shown')
 
 
 def test_name_and_filter_options_are_fixed_per_call_site() -> None:
@@ -260,10 +324,16 @@ def test_throttle_measures_on_the_given_clock_and_logs_the_first_call() -> None:
     assert given is True  # steady time since boot is past 1 ms
 
 
-def test_messages_must_be_strings_when_printed() -> None:
-    """rclpy's C logging call takes str only; a message below the level is never converted."""
+def test_messages_must_be_strings_when_printed(capfd: pytest.CaptureFixture[str]) -> None:
+    """rclpy's C logging call takes str (or UTF-8 bytes); below the level nothing is checked."""
     logger = get_logger('test_logging_message_type')
     logger.set_level(LoggingSeverity.WARN)
     assert logger.info(42) is False
-    with pytest.raises(TypeError, match='the message must be a str, got int'):
+    with pytest.raises(TypeError, match=r'^rclpy_logging_rcutils_log\(\): incompatible function'):
         logger.warning(42)
+    with pytest.raises(TypeError, match=r'Invoked with: .*, 42, '):
+        logger.error('text', name=42)
+    assert logger.warning(b'bytes are text') is True
+    assert logger.warning('cut at\0 the NUL') is True
+    messages = [m.group(5) for m in map(LINE.match, capfd.readouterr().err.splitlines()) if m]
+    assert messages == ['bytes are text', 'cut at']

@@ -12,11 +12,20 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Parameters: rclpy's typing rules, overrides from --ros-args and on-set validation."""
+"""Parameters: rclpy's typing rules, overrides from --ros-args and on-set validation.
 
+Every test runs in both worlds on the world's own objects: a node made by
+``tf_demo.transport.create_node`` (``rclpy.node.Node`` inside ROS 2, ``DdsNode`` standalone) and
+the classes of ``tf_demo.transport.parameters`` (rclpy's inside ROS 2).
+"""
+
+from array import array
+from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
+from tf_demo import transport
 from tf_demo.transport.parameters import FloatingPointRange
 from tf_demo.transport.parameters import IntegerRange
 from tf_demo.transport.parameters import InvalidParameterTypeException
@@ -25,12 +34,32 @@ from tf_demo.transport.parameters import Parameter
 from tf_demo.transport.parameters import ParameterAlreadyDeclaredException
 from tf_demo.transport.parameters import ParameterDescriptor
 from tf_demo.transport.parameters import ParameterNotDeclaredException
-from tf_demo.transport.parameters import ParameterStore
 from tf_demo.transport.parameters import ParameterUninitializedException
 from tf_demo.transport.parameters import SetParametersResult
-from tf_demo.transport.ros_args import parse_ros_args
 
 Type = Parameter.Type
+
+
+@pytest.fixture
+def make_node(ros: None) -> Iterator[Any]:
+    """Create nodes of this run's world (``create_node`` keyword arguments); destroyed after."""
+    del ros
+    nodes: list[Any] = []
+
+    def make(name: str = 'test_parameters', **kwargs: Any) -> Any:
+        node = transport.create_node(name, **kwargs)
+        nodes.append(node)
+        return node
+
+    yield make
+    for node in nodes:
+        node.destroy_node()
+
+
+@pytest.fixture
+def node(make_node: Any) -> Any:
+    """One node of this run's world without overrides."""
+    return make_node()
 
 
 def test_parameter_type_is_inferred_as_rclpy_infers_it() -> None:
@@ -48,47 +77,70 @@ def test_parameter_type_is_inferred_as_rclpy_infers_it() -> None:
         Parameter('a', value=[1, 'x'])
     with pytest.raises(ValueError, match=r"Type 'Type\.DOUBLE' and value '1' do not agree"):
         Parameter('a', Type.DOUBLE, 1)
+    assert repr(Type.DOUBLE) == '<Type.DOUBLE: 3>'
 
 
-def test_declare_returns_the_default_and_rejects_redeclaration() -> None:
+def test_explicit_types_check_values_as_rclpy_does() -> None:
+    """rclpy's Type.check: a bool is an INTEGER, bytes items have length 1, few array.arrays."""
+    assert Parameter('a', Type.INTEGER, True).value is True
+    assert Parameter('a', Type.INTEGER_ARRAY, [1, False]).type_ is Type.INTEGER_ARRAY
+    assert Parameter('a', Type.DOUBLE_ARRAY, array('d', [1.0])).type_ is Type.DOUBLE_ARRAY
+    assert Parameter('a', Type.BYTE_ARRAY, [b'x']).type_ is Type.BYTE_ARRAY
+    for type_, value in (
+        (Type.BYTE_ARRAY, [b'xy']),
+        (Type.BOOL_ARRAY, array('b', [1])),
+        (Type.BOOL, 1),
+        (Type.DOUBLE, 1),
+        (Type.STRING_ARRAY, 'abc'),
+    ):
+        with pytest.raises(ValueError, match='do not agree'):
+            Parameter('a', type_, value)
+    with pytest.raises(TypeError, match="type must be an instance of '<enum 'Type'>'"):
+        Parameter('a', 3, 1)  # type: ignore[arg-type]
+    parameter = Parameter('a', value=1)
+    assert parameter != Parameter('a', value=1)  # no value equality in rclpy: identity
+    assert {parameter: 1}[parameter] == 1  # hashable
+
+
+def test_declare_returns_the_default_and_rejects_redeclaration(node: Any) -> None:
     """declare_parameter returns the parameter; declaring it again raises."""
-    store = ParameterStore()
-    assert store.declare_parameter('rate', 10.0).value == 10.0
-    assert store.has_parameter('rate')
+    assert node.declare_parameter('rate', 10.0).value == 10.0
+    assert node.has_parameter('rate')
     with pytest.raises(ParameterAlreadyDeclaredException, match="already declared: \\['rate'\\]"):
-        store.declare_parameter('rate', 1.0)
+        node.declare_parameter('rate', 1.0)
 
 
-def test_undeclared_parameters_raise_rclpys_error() -> None:
+def test_undeclared_parameters_raise_rclpys_error(node: Any) -> None:
     """Getting or setting an undeclared parameter raises ParameterNotDeclaredException."""
-    store = ParameterStore()
     with pytest.raises(ParameterNotDeclaredException, match='undeclared parameter\\(s\\): nope'):
-        store.get_parameter('nope')
-    with pytest.raises(ParameterNotDeclaredException):
-        store.set_parameters([Parameter('nope', value=1)])
-    assert store.get_parameter_or('nope').type_ is Type.NOT_SET
+        node.get_parameter('nope')
+    # (rclpy's text for set_parameters lists the names after the first, so it is not compared)
+    with pytest.raises(ParameterNotDeclaredException, match=r'^Invalid access to undeclared'):
+        node.set_parameters([Parameter('nope', value=1)])
+    assert node.get_parameter_or('nope').type_ is Type.NOT_SET
+    assert node.get_parameter_or('nope').name == 'nope'
     alternative = Parameter('nope', value=3)
-    assert store.get_parameter_or('nope', alternative) is alternative
+    assert node.get_parameter_or('nope', alternative) is alternative
+    with pytest.raises(TypeError, match=r'^All names must be instances of type str$'):
+        node.get_parameters(['nope', 1])
 
 
-def test_setting_another_type_is_rejected_unless_dynamically_typed() -> None:
+def test_setting_another_type_is_rejected_unless_dynamically_typed(node: Any) -> None:
     """Static typing rejects with rclpy's reason; dynamic_typing accepts any type."""
-    store = ParameterStore()
-    store.declare_parameter('frame', 'map')
-    store.declare_parameter('anything', 1, ParameterDescriptor(dynamic_typing=True))
-    [result] = store.set_parameters([Parameter('frame', value=3)])
+    node.declare_parameter('frame', 'map')
+    node.declare_parameter('anything', 1, ParameterDescriptor(dynamic_typing=True))
+    [result] = node.set_parameters([Parameter('frame', value=3)])
     assert not result.successful
     assert result.reason == "Wrong parameter type, expected 'Type.STRING' got 'Type.INTEGER'"
-    assert store.get_parameter('frame').value == 'map'
-    [result] = store.set_parameters([Parameter('anything', value='now a string')])
+    assert node.get_parameter('frame').value == 'map'
+    [result] = node.set_parameters([Parameter('anything', value='now a string')])
     assert result.successful
-    assert store.get_parameter('anything').value == 'now a string'
+    assert node.get_parameter('anything').value == 'now a string'
 
 
-def test_on_set_callback_can_reject_with_a_reason() -> None:
+def test_on_set_callback_can_reject_with_a_reason(node: Any) -> None:
     """A rejecting callback keeps the old value; removing it lets the change through."""
-    store = ParameterStore()
-    store.declare_parameter('rate', 10.0)
+    node.declare_parameter('rate', 10.0)
 
     def positive_rate(parameters: list[Parameter]) -> SetParametersResult:
         for parameter in parameters:
@@ -96,56 +148,62 @@ def test_on_set_callback_can_reject_with_a_reason() -> None:
                 return SetParametersResult(successful=False, reason='rate must be positive')
         return SetParametersResult(successful=True)
 
-    store.add_on_set_parameters_callback(positive_rate)
-    [result] = store.set_parameters([Parameter('rate', value=-1.0)])
+    node.add_on_set_parameters_callback(positive_rate)
+    [result] = node.set_parameters([Parameter('rate', value=-1.0)])
     assert (result.successful, result.reason) == (False, 'rate must be positive')
-    assert store.get_parameter('rate').value == 10.0
-    [result] = store.set_parameters([Parameter('rate', value=20.0)])
+    assert node.get_parameter('rate').value == 10.0
+    [result] = node.set_parameters([Parameter('rate', value=20.0)])
     assert result.successful
-    assert store.get_parameter('rate').value == 20.0
-    store.remove_on_set_parameters_callback(positive_rate)
-    assert store.set_parameters([Parameter('rate', value=-1.0)])[0].successful
+    assert node.get_parameter('rate').value == 20.0
+    node.remove_on_set_parameters_callback(positive_rate)
+    assert node.set_parameters([Parameter('rate', value=-1.0)])[0].successful
 
 
-def test_a_rejected_declaration_raises_invalid_value() -> None:
+def test_an_on_set_callback_must_return_a_result(node: Any) -> None:
+    """As in rclpy, the result's ``successful`` is read: returning None is an AttributeError."""
+    node.declare_parameter('rate', 10.0)
+    node.add_on_set_parameters_callback(lambda parameters: None)
+    with pytest.raises(AttributeError, match="'NoneType' object has no attribute 'successful'"):
+        node.set_parameters([Parameter('rate', value=1.0)])
+
+
+def test_a_rejected_declaration_raises_invalid_value(make_node: Any) -> None:
     """An on-set callback that rejects an overridden value makes declare raise."""
-    store = ParameterStore({'rate': Parameter('rate', value=-5.0)})
-    store.add_on_set_parameters_callback(
+    node = make_node(parameter_overrides=[Parameter('rate', value=-5.0)])
+    node.add_on_set_parameters_callback(
         lambda params: SetParametersResult(successful=False, reason='no negative rates')
     )
     with pytest.raises(InvalidParameterValueException, match='Reason: no negative rates: rate'):
-        store.declare_parameter('rate', 1.0)
+        node.declare_parameter('rate', 1.0)
 
 
-def test_read_only_parameters_cannot_be_set() -> None:
+def test_read_only_parameters_cannot_be_set(node: Any) -> None:
     """Setting a read-only parameter fails with a reason naming it."""
-    store = ParameterStore()
-    store.declare_parameter('robot', 'r2', ParameterDescriptor(read_only=True))
-    [result] = store.set_parameters([Parameter('robot', value='c3po')])
+    node.declare_parameter('robot', 'r2', ParameterDescriptor(read_only=True))
+    [result] = node.set_parameters([Parameter('robot', value='c3po')])
     assert not result.successful
-    assert 'read-only parameter: robot' in result.reason
+    assert result.reason == 'Trying to set a read-only parameter: robot.'
 
 
-def test_typed_parameter_without_value_is_uninitialized() -> None:
+def test_typed_parameter_without_value_is_uninitialized(node: Any) -> None:
     """Declaring with a Parameter.Type and no override leaves it unreadable until set."""
-    store = ParameterStore()
-    store.declare_parameter('urdf', Type.STRING)
+    node.declare_parameter('urdf', Type.STRING)
     with pytest.raises(ParameterUninitializedException, match="'urdf' is not initialized"):
-        store.get_parameter('urdf')
-    assert store.set_parameters([Parameter('urdf', value='<robot/>')])[0].successful
-    assert store.get_parameter('urdf').value == '<robot/>'
+        node.get_parameter('urdf')
+    assert node.get_parameter_or('urdf').type_ is Type.NOT_SET
+    assert node.set_parameters([Parameter('urdf', value='<robot/>')])[0].successful
+    assert node.get_parameter('urdf').value == '<robot/>'
 
 
-def test_override_of_the_wrong_type_raises_invalid_type() -> None:
+def test_override_of_the_wrong_type_raises_invalid_type(make_node: Any) -> None:
     """-p rate:=5 for a double default raises rclpy's InvalidParameterTypeException."""
-    overrides = parse_ros_args(['--ros-args', '-p', 'rate:=5']).parameter_overrides('/n')
-    store = ParameterStore(overrides)
+    node = make_node(cli_args=['--ros-args', '-p', 'rate:=5'])
     expected = "Trying to set parameter 'rate' to '5' of type 'INTEGER', expecting type 'DOUBLE'"
     with pytest.raises(InvalidParameterTypeException, match=expected):
-        store.declare_parameter('rate', 1.0)
+        node.declare_parameter('rate', 1.0)
 
 
-def test_overrides_from_params_file_and_command_line(tmp_path: Path) -> None:
+def test_overrides_from_params_file_and_command_line(make_node: Any, tmp_path: Path) -> None:
     """/** and the node's own entry apply in order; -p after the file wins; others ignored."""
     params = tmp_path / 'params.yaml'
     params.write_text(
@@ -163,44 +221,50 @@ def test_overrides_from_params_file_and_command_line(tmp_path: Path) -> None:
         '    rate: 3.0\n',
         encoding='utf-8',
     )
-    args = parse_ros_args(
-        ['--ros-args', '--params-file', str(params), '-p', 'frames.child:=base_link']
-    )
-    store = ParameterStore(args.parameter_overrides('/talker'))
-    assert store.declare_parameter('rate', 0.5).value == 2.0
-    assert store.declare_parameter('use_sim_time', False).value is True
-    assert store.declare_parameter('frames.parent', 'map').value == 'odom'
-    assert store.declare_parameter('frames.child', 'x').value == 'base_link'
-    assert store.declare_parameter('untouched', 4).value == 4
-    assert store.declare_parameter('ignored', 'a', ignore_override=False).value == 'a'
-    other = ParameterStore(args.parameter_overrides('/ns/other'))
+    args = ['--ros-args', '--params-file', str(params), '-p', 'frames.child:=base_link']
+    node = make_node('talker', cli_args=args)
+    assert node.declare_parameter('rate', 0.5).value == 2.0
+    # use_sim_time is declared by every node; the file's /** entry set it
+    assert node.get_parameter('use_sim_time').value is True
+    assert node.declare_parameter('frames.parent', 'map').value == 'odom'
+    assert node.declare_parameter('frames.child', 'x').value == 'base_link'
+    assert node.declare_parameter('untouched', 4).value == 4
+    assert node.declare_parameter('ignored', 'a', ignore_override=False).value == 'a'
+    other = make_node('other', namespace='/ns', cli_args=args)
     assert other.declare_parameter('rate', 0.5).value == 3.0
-    assert other.declare_parameter('rate2', 0.5, ignore_override=True).value == 0.5
+    assert other.declare_parameter('frames.parent', 'x', ignore_override=True).value == 'x'
 
 
-def test_declare_parameters_with_a_namespace() -> None:
+def test_declare_parameters_with_a_namespace(make_node: Any) -> None:
     """declare_parameters prefixes names with the namespace and a dot."""
-    store = ParameterStore({'limits.max': Parameter('limits.max', value=9)})
-    declared = store.declare_parameters('limits', [('min', 0), ('max', 5)])
+    node = make_node(parameter_overrides=[Parameter('limits.max', value=9)])
+    declared = node.declare_parameters('limits', [('min', 0), ('max', 5)])
     assert [(p.name, p.value) for p in declared] == [('limits.min', 0), ('limits.max', 9)]
-    assert set(store.get_parameters_by_prefix('limits')) == {'min', 'max'}
+    assert set(node.get_parameters_by_prefix('limits')) == {'min', 'max'}
+    # rclpy only checks the length of each entry: a list works as well as a tuple
+    [listed] = node.declare_parameters('', [['listed', 1.5]])
+    assert (listed.name, listed.value) == ('listed', 1.5)
 
 
-def test_automatically_declared_overrides() -> None:
-    """automatically_declare_parameters_from_overrides declares every override."""
-    store = ParameterStore(
-        {'x': Parameter('x', value=1.5)}, automatically_declare_parameters_from_overrides=True
+def test_automatically_declared_overrides(make_node: Any) -> None:
+    """automatically_declare_parameters_from_overrides declares every override, typed by it."""
+    node = make_node(
+        parameter_overrides=[Parameter('x', value=1.5)],
+        automatically_declare_parameters_from_overrides=True,
     )
-    assert store.get_parameter('x').value == 1.5
+    assert node.get_parameter('x').value == 1.5
+    descriptor = node.describe_parameter('x')
+    assert (descriptor.dynamic_typing, descriptor.type) == (False, Type.DOUBLE.value)
+    [result] = node.set_parameters([Parameter('x', value='text')])
+    assert result.reason == "Wrong parameter type, expected 'Type.DOUBLE' got 'Type.STRING'"
 
 
 @pytest.mark.dds
-def test_standalone_node_takes_overrides_from_init_and_its_own_arguments(
-    dds_env: dict[str, str], tmp_path: Path
+def test_node_takes_overrides_from_init_and_its_own_arguments(
+    world_env: dict[str, str], tmp_path: Path
 ) -> None:
-    """A DDS node sees -p from init, its params-file entry and its cli_args (last wins)."""
-    from tf_demo import transport
-
+    """A node sees -p from init, its params-file entry and its cli_args (last wins)."""
+    del world_env
     params = tmp_path / 'params.yaml'
     params.write_text(
         '/robot/talker:\n  ros__parameters:\n    rate: 2.0\n    frame: odom\n', encoding='utf-8'
@@ -222,82 +286,90 @@ def test_standalone_node_takes_overrides_from_init_and_its_own_arguments(
         [result] = node.set_parameters([Parameter('rate', value=3.0)])
         assert (result.successful, result.reason, rejected) == (False, 'frozen', ['rate'])
         assert node.get_parameter('rate').value == 2.0
+        node.destroy_node()
     finally:
         transport.shutdown()
 
 
-def test_declaring_only_a_name_is_dynamic_and_deprecated() -> None:
+def test_declaring_only_a_name_is_dynamic_and_deprecated(node: Any) -> None:
     """A bare name declares a dynamically typed parameter, with rclpy's deprecation warning."""
-    store = ParameterStore()
-    with pytest.warns(UserWarning, match='only providing its name is deprecated'):
-        parameter = store.declare_parameter('loose')
+    with pytest.warns(UserWarning, match='only providing its name is deprecated. You have to'):
+        parameter = node.declare_parameter('loose')
     assert parameter.type_ is Type.NOT_SET
-    assert store.describe_parameter('loose').dynamic_typing
-    assert store.set_parameters([Parameter('loose', value=1)])[0].successful
-    assert store.set_parameters([Parameter('loose', value='one')])[0].successful
+    assert node.describe_parameter('loose').dynamic_typing
+    alternative = Parameter('loose', value='unset')
+    assert node.get_parameter_or('loose', alternative) is alternative  # NOT_SET: no value yet
+    assert node.set_parameters([Parameter('loose', value=1)])[0].successful
+    assert node.set_parameters([Parameter('loose', value='one')])[0].successful
 
 
-def test_static_parameter_needs_a_type() -> None:
+def test_static_parameter_needs_a_type(node: Any) -> None:
     """None with a static descriptor, or Type.NOT_SET, cannot declare a static parameter."""
-    store = ParameterStore()
     with pytest.raises(ValueError, match='default value of type PARAMETER_NOT_SET'):
-        store.declare_parameter('x', None, ParameterDescriptor())
+        node.declare_parameter('x', None, ParameterDescriptor())
     with pytest.raises(ValueError, match='as statically typed of type NOT_SET'):
-        store.declare_parameter('x', Type.NOT_SET)
+        node.declare_parameter('x', Type.NOT_SET)
     with pytest.raises(ValueError, match='`dynamic_typing=True` is not allowed'):
-        store.declare_parameter('x', Type.INTEGER, ParameterDescriptor(dynamic_typing=True))
+        node.declare_parameter('x', Type.INTEGER, ParameterDescriptor(dynamic_typing=True))
     with pytest.raises(TypeError, match='is not a ParameterDescriptor'):
-        store.declare_parameters('', [('x', 1, 'descriptor')])
+        node.declare_parameters('', [('x', 1, 'descriptor')])
 
 
-def test_not_set_value_undeclares_dynamic_but_not_static_parameters() -> None:
+def test_not_set_value_undeclares_dynamic_but_not_static_parameters(node: Any) -> None:
     """Setting NOT_SET removes a dynamic parameter; a static one refuses with rclpy's reason."""
-    store = ParameterStore()
-    store.declare_parameter('dynamic', 1, ParameterDescriptor(dynamic_typing=True))
-    store.declare_parameter('static', 1)
-    assert store.set_parameters([Parameter('dynamic')])[0].successful
-    assert not store.has_parameter('dynamic')
-    [result] = store.set_parameters([Parameter('static')])
+    node.declare_parameter('dynamic', 1, ParameterDescriptor(dynamic_typing=True))
+    node.declare_parameter('static', 1)
+    assert node.set_parameters([Parameter('dynamic')])[0].successful
+    assert not node.has_parameter('dynamic')
+    [result] = node.set_parameters([Parameter('static')])
     assert (result.successful, result.reason) == (False, 'Static parameter cannot be undeclared')
 
 
-def test_descriptor_ranges_are_enforced_with_rclpys_reasons() -> None:
+def test_descriptor_ranges_are_enforced_with_rclpys_reasons(make_node: Any) -> None:
     """Integer and floating point ranges accept edges and steps and reject the rest."""
-    store = ParameterStore()
-    store.declare_parameter(
+    node = make_node()
+    node.declare_parameter(
         'count',
         4,
         ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=10, step=2)]),
     )
-    store.declare_parameter(
-        'ratio', 0.5, ParameterDescriptor(floating_point_range=[FloatingPointRange(0.0, 1.0, 0.0)])
+    node.declare_parameter(
+        'ratio',
+        0.5,
+        ParameterDescriptor(
+            floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0, step=0.0)]
+        ),
     )
-    assert store.set_parameters([Parameter('count', value=10)])[0].successful
-    [odd] = store.set_parameters([Parameter('count', value=3)])
+    assert node.set_parameters([Parameter('count', value=10)])[0].successful
+    [odd] = node.set_parameters([Parameter('count', value=3)])
     assert odd.reason == (
         'The parameter value for count is not a valid step. Min: 0, max: 10, value: 3, step: 2'
     )
-    [high] = store.set_parameters([Parameter('ratio', value=1.5)])
+    [high] = node.set_parameters([Parameter('count', value=11)])
+    assert high.reason == 'Parameter count out of range. Min: 0, Max: 10, value: 11'
+    [high] = node.set_parameters([Parameter('ratio', value=1.5)])
     assert high.reason == 'Parameter ratio out of range Min: 0.0, Max: 1.0, value: 1.5'
-    assert store.set_parameters([Parameter('ratio', value=1.0 + 1e-9)])[0].successful
+    assert node.set_parameters([Parameter('ratio', value=1.0 + 1e-9)])[0].successful
+    overridden = make_node('ranged', parameter_overrides=[Parameter('count', value=11)])
     with pytest.raises(InvalidParameterValueException, match='out of range'):
-        ParameterStore({'count': Parameter('count', value=11)}).declare_parameter(
-            'count', 1, ParameterDescriptor(integer_range=[IntegerRange(0, 10, 0)])
+        overridden.declare_parameter(
+            'count',
+            1,
+            ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=10, step=0)]),
         )
 
 
-def test_pre_and_post_set_callbacks() -> None:
+def test_pre_and_post_set_callbacks(node: Any) -> None:
     """Pre-set callbacks rewrite the list before validation; post-set ones see what was set."""
-    store = ParameterStore()
-    store.declare_parameter('width', 1)
-    store.declare_parameter('area', 1)
+    node.declare_parameter('width', 1)
+    node.declare_parameter('area', 1)
     seen: list[list[str]] = []
-    store.add_pre_set_parameters_callback(
+    node.add_pre_set_parameters_callback(
         lambda params: [*params, Parameter('area', value=params[0].value ** 2)]
     )
-    store.add_post_set_parameters_callback(lambda params: seen.append([p.name for p in params]))
-    assert store.set_parameters([Parameter('width', value=3)])[0].successful
-    assert store.get_parameter('area').value == 9
+    node.add_post_set_parameters_callback(lambda params: seen.append([p.name for p in params]))
+    assert node.set_parameters([Parameter('width', value=3)])[0].successful
+    assert node.get_parameter('area').value == 9
     assert seen == [['width', 'area']]
-    store.declare_parameter('depth', 2)
+    node.declare_parameter('depth', 2)
     assert seen[-1] == ['depth']  # declaring runs post-set callbacks too

@@ -926,7 +926,7 @@ class DdsNode(NodeServicesMixin):
         return self._parameters.declare_parameter(name, value, descriptor, ignore_override)
 
     def declare_parameters(
-        self, namespace: str, parameters: Sequence[tuple[Any, ...]], ignore_override: bool = False
+        self, namespace: str, parameters: Sequence[Sequence[Any]], ignore_override: bool = False
     ) -> list[Any]:
         """Declare several parameters: tuples of ``(name[, value[, descriptor]])``."""
         return self._parameters.declare_parameters(namespace, parameters, ignore_override)

@@ -79,21 +79,52 @@ _COLORS = {
 _COLOR_RESET = '\033[0m'
 
 
+_ASCII_UPPER = str.maketrans('abcdefghijklmnopqrstuvwxyz', 'ABCDEFGHIJKLMNOPQRSTUVWXYZ')
+
+
+def _c_string(value: Any) -> str | None:
+    """
+    Return ``value`` as rclpy's C extension reads a string argument, else None.
+
+    pybind11 takes ``str`` and ``bytes`` (UTF-8); C stops at the first NUL character.
+    """
+    if isinstance(value, bytes):
+        value = value.decode('utf-8', errors='replace')
+    if not isinstance(value, str):
+        return None
+    return value.partition('\0')[0]
+
+
+def _incompatible_arguments(function: str, signature: str, arguments: tuple[Any, ...]) -> str:
+    """pybind11's text for a call of ``function`` with arguments of the wrong types."""
+    invoked = ', '.join(repr(argument) for argument in arguments)
+    return (
+        f'{function}(): incompatible function arguments. The following argument types are '
+        f'supported:\n    1. {signature}\n\nInvoked with: {invoked}'
+    )
+
+
 def get_logging_severity_from_string(log_severity: str) -> LoggingSeverity:
     """
-    Return the severity named ``log_severity`` (case-insensitive; ``warning`` means WARN).
+    Return the severity named ``log_severity``, as rcutils parses it.
 
-    :raises ValueError: for an unknown name, listing the valid ones.
+    The name is compared in ASCII upper case with ``UNSET``, ``DEBUG``, ``INFO``, ``WARN``,
+    ``ERROR`` and ``FATAL`` (no ``warning``, no stripping).
+
+    :raises RuntimeError: for an unknown name (rclpy's text).
+    :raises TypeError: for a value that is not a string (pybind11's text).
     """
-    key = log_severity.strip().upper()
-    if key == 'WARNING':
-        key = 'WARN'
-    try:
-        return LoggingSeverity[key]
-    except KeyError:
-        valid = ', '.join(level.name.lower() for level in LoggingSeverity)
-        msg = f"Unknown log severity '{log_severity}' (expected one of: {valid})"
-        raise ValueError(msg) from None
+    key = _c_string(log_severity)
+    if key is None:
+        msg = _incompatible_arguments(
+            'rclpy_logging_severity_level_from_string', '(arg0: str) -> int', (log_severity,)
+        )
+        raise TypeError(msg)
+    severity = LoggingSeverity.__members__.get(key.translate(_ASCII_UPPER))
+    if severity is None:
+        msg = 'Failed to get severity name'
+        raise RuntimeError(msg)
+    return severity
 
 
 def format_log_line(
@@ -110,17 +141,23 @@ def format_log_line(
     """
     Format one console line as rcutils does (without the trailing newline).
 
-    Unknown ``{tokens}`` are copied as they are, as rcutils does.
+    As rcutils: ``{time}`` has at least 10 digits of seconds, ``{time_as_nanoseconds}`` at
+    least 19 digits; of a ``{`` that does not start a known token only the ``{`` is copied and
+    the search goes on after it (``{x{name}}`` gives ``{x<name>}``).
     """
-    sec, nsec = divmod(stamp_ns, 1_000_000_000)
+    sec, nsec = divmod(abs(stamp_ns), 1_000_000_000)
+    sign = '-' if stamp_ns < 0 else ''
     tokens: dict[str, Callable[[], str]] = {
         'severity': lambda: severity.name,
         'name': lambda: name,
         'message': lambda: message,
-        'time': lambda: f'{sec}.{nsec:09d}',
-        'time_as_nanoseconds': lambda: str(stamp_ns),
+        # rcutils_time_point_value_as_seconds_string: "%s%.10" PRId64 ".%.9" PRId64
+        'time': lambda: f'{sign}{sec:010d}.{nsec:09d}',
+        # "%.19" PRId64: at least 19 digits
+        'time_as_nanoseconds': lambda: f'{sign}{abs(stamp_ns):019d}',
+        # rcutils appends ".%.3s" of the unpadded nanoseconds (42 ns gives ".42")
         'date_time_with_ms': lambda: (
-            time.strftime('%Y-%m-%d %H:%M:%S', time.localtime(sec)) + f'.{nsec // 1_000_000:03d}'
+            time.strftime('%Y-%m-%d %H:%M:%S', time.localtime(sec)) + f'.{str(nsec)[:3]}'
         ),
         'function_name': lambda: function_name,
         'file_name': lambda: file_name,
@@ -138,9 +175,12 @@ def format_log_line(
             pieces.append(output_format[index:])
             break
         pieces.append(output_format[index:start])
-        token = output_format[start + 1 : end]
-        producer = tokens.get(token)
-        pieces.append(producer() if producer else output_format[start : end + 1])
+        producer = tokens.get(output_format[start + 1 : end])
+        if producer is None:
+            pieces.append('{')
+            index = start + 1
+            continue
+        pieces.append(producer())
         index = end + 1
     return ''.join(pieces)
 
@@ -164,6 +204,38 @@ class _LoggingState:
 
 
 _STATE = _LoggingState()
+
+
+_FORMAT_ESCAPES = {'a': '\a', 'b': '\b', 'n': '\n', 'r': '\r', 't': '\t'}
+_MAX_OUTPUT_FORMAT_LEN = 2048
+"""rcutils' RCUTILS_LOGGING_MAX_OUTPUT_FORMAT_LEN (the format is cut to one less)."""
+
+
+def _output_format() -> str:
+    r"""
+    Return ``RCUTILS_CONSOLE_OUTPUT_FORMAT`` decoded as rcutils decodes it, else the default.
+
+    ``\a``, ``\b``, ``\n``, ``\r``, ``\t`` and ``\x1b`` become the characters they
+    name; any other backslash pair is kept as it is.
+    """
+    raw = os.environ.get('RCUTILS_CONSOLE_OUTPUT_FORMAT') or DEFAULT_OUTPUT_FORMAT
+    raw = raw[: _MAX_OUTPUT_FORMAT_LEN - 1]
+    pieces: list[str] = []
+    index = 0
+    while index < len(raw):
+        slash = raw.find('\\', index)
+        if slash < 0:
+            pieces.append(raw[index:])
+            break
+        pieces.append(raw[index:slash])
+        if raw.startswith('x1b', slash + 1):
+            pieces.append('\x1b')
+            index = slash + 4
+            continue
+        escaped = _FORMAT_ESCAPES.get(raw[slash + 1 : slash + 2])
+        pieces.append(escaped if escaped is not None else raw[slash : slash + 2])
+        index = slash + 2
+    return ''.join(pieces)
 
 
 def _stream() -> TextIO:
@@ -233,6 +305,7 @@ _FILTER_PARAMETERS: dict[str, dict[str, Any]] = {
     'skip_first': {'skip_first': None},
     'once': {'once': None},
 }
+_FILTER_CLASS_NAMES = {'throttle': 'Throttle', 'skip_first': 'SkipFirst', 'once': 'Once'}
 _ALL_FILTER_PARAMETERS = [name for params in _FILTER_PARAMETERS.values() for name in params]
 _THIS_FILE = os.path.realpath(__file__)
 
@@ -281,7 +354,13 @@ def _new_context(
     context: dict[str, Any] = {'name': name, 'severity': severity, 'filters': filters}
     for filter_name in filters:
         for param, default in _FILTER_PARAMETERS[filter_name].items():
-            context[param] = options.get(param, default)
+            context[param] = options.get(param, _resolved(default))
+            if context[param] is None:
+                msg = (
+                    f'Required parameter "{param}" was not specified for logging filter '
+                    f'"{_FILTER_CLASS_NAMES[filter_name]}"'
+                )
+                raise TypeError(msg)
         if filter_name == 'throttle':
             # rclpy Jazzy: the last time starts at 0 on the chosen clock, so the first call
             # always logs; the time source must be a Clock (system time unless given).
@@ -289,8 +368,6 @@ def _new_context(
             from tf_demo.transport.clock import Clock
 
             source = context['throttle_time_source_type']
-            if source is _DEFAULT_CLOCK:
-                source = context['throttle_time_source_type'] = _system_clock()
             if not isinstance(source, Clock):
                 msg = f'Received throttle_time_source_type of "{source}" is not a clock instance'
                 raise ValueError(msg)
@@ -334,7 +411,7 @@ def _should_log(filter_name: str, context: dict[str, Any]) -> bool:
     """Apply one filter to a call site's state, updating it as rclpy's ``should_log`` does."""
     if filter_name == 'throttle':
         now = context['throttle_time_source_type'].now().nanoseconds
-        if now < context['throttle_last_logged'] + float(context['throttle_duration_sec']) * 1e9:
+        if now < context['throttle_last_logged'] + context['throttle_duration_sec'] * 1e9:
             return False
         context['throttle_last_logged'] = now
         return True
@@ -365,6 +442,8 @@ class Logger:
     (:data:`CallerId`): the first call fixes its severity, ``name=`` and filter options, and a
     later call from the same site that changes any of them raises ``ValueError`` — e.g.
     ``(logger.warning if bad else logger.error)(text)`` fails on its second, different call.
+    A call below the logger's level is dropped before any of this (rclpy checks the level
+    first), so it neither fixes a call site nor has its options checked.
     """
 
     def __init__(self, name: str = '') -> None:
@@ -401,11 +480,16 @@ class Logger:
 
         :param kwargs: ``once=True``, ``skip_first=True``, ``throttle_duration_sec=<float>``
             (evaluated in rclpy's order: throttle, skip_first, once), ``name=`` another logger.
-        :return: whether the message was printed.
-        :raises TypeError: for an unknown or incomplete option, or a message that is not a
-            ``str`` (rclpy's C logging function takes strings only).
+        As in rclpy, a call below the logger's level returns False at once: its options are not
+        checked and its call site keeps no state.
+
+        :return: False when the level or a filter dropped the message, else True.
+        :raises TypeError: for an unknown or incomplete option, or a message or name that is
+            not a string (pybind11's text of rclpy's C logging function).
         :raises ValueError: when this call site changes its severity, name or filter options.
         """
+        if not self.is_enabled_for(severity):
+            return False
         severity = LoggingSeverity(severity)
         name = kwargs.pop('name', self.name)
         filters = _detect_filters(kwargs)
@@ -423,17 +507,21 @@ class Logger:
                 self._contexts[caller] = context
             else:
                 _check_unchanged(context, name, severity, filters, kwargs)
-            if not self.is_enabled_for(severity):
-                return False
-            for filter_name in filters:
+            for filter_name in context['filters']:
                 if not _should_log(filter_name, context):
                     return False
-        if not isinstance(message, str):
-            msg = (
-                'rclpy_logging_rcutils_log(): incompatible function arguments '
-                f'(the message must be a str, got {type(message).__name__})'
-            )
+        text, logger_name = _c_string(message), _c_string(name)
+        if text is None or logger_name is None:
+            msg = _incompatible_arguments(
+                'rclpy_logging_rcutils_log',
+                '(arg0: int, arg1: str, arg2: str, arg3: str, arg4: str, arg5: int) -> None',
+                (
+                    severity, name, message, frame.f_code.co_name,
+                    os.path.abspath(frame.f_code.co_filename), frame.f_lineno,
+                ),
+            )  # fmt: skip
             raise TypeError(msg)
+        message, name = text, logger_name
         stream = _stream()
         stamp_ns = time.time_ns()
         line = format_log_line(
@@ -441,20 +529,17 @@ class Logger:
             name,
             message,
             stamp_ns,
-            output_format=os.environ.get('RCUTILS_CONSOLE_OUTPUT_FORMAT') or DEFAULT_OUTPUT_FORMAT,
+            output_format=_output_format(),
             function_name=frame.f_code.co_name,
             file_name=frame.f_code.co_filename,
             line_number=frame.f_lineno,
         )
         if _colorize(stream):
             line = f'{_COLORS[severity]}{line}{_COLOR_RESET}'
-        printed = True
-        with _STATE.lock:
-            try:
-                stream.write(line + '\n')
-                stream.flush()
-            except (OSError, ValueError):
-                printed = False  # a closed stream must not crash the node
+        # a closed stream must not crash the node (rcutils ignores failed writes too)
+        with _STATE.lock, contextlib.suppress(OSError, ValueError):
+            stream.write(line + '\n')
+            stream.flush()
         if _SINKS:
             _emit_to_sinks(
                 LogRecord(
@@ -462,7 +547,7 @@ class Logger:
                     frame.f_code.co_name, frame.f_code.co_filename, frame.f_lineno,
                 )
             )  # fmt: skip
-        return printed
+        return True
 
     def debug(self, message: Any, **kwargs: Any) -> bool:
         """Log at DEBUG."""

@@ -104,23 +104,33 @@ class ParameterType(Enum):
         raise TypeError(msg)
 
     def check(self, parameter_value: Any) -> bool:
-        """Whether ``parameter_value`` can be held by a parameter of this type (rclpy's rule)."""
+        """
+        Whether ``parameter_value`` can be held by a parameter of this type (rclpy's rule).
+
+        As in rclpy a ``bool`` passes for INTEGER (it is an ``int``), BYTE_ARRAY items are
+        ``bytes`` of length 1, and only the INTEGER and DOUBLE arrays may be ``array.array``.
+        """
         if self is ParameterType.NOT_SET:
             return parameter_value is None
         scalar = _SCALAR_TYPES.get(self)
         if scalar is not None:
-            if scalar is int and isinstance(parameter_value, bool):
-                return False
             return isinstance(parameter_value, scalar)
         element = _ARRAY_ELEMENT_TYPES[self]
-        if not isinstance(parameter_value, (list, tuple, array.array)):
+        numeric = self in (ParameterType.INTEGER_ARRAY, ParameterType.DOUBLE_ARRAY)
+        if isinstance(parameter_value, array.array) and numeric:
+            items: Iterable[Any] = parameter_value
+        elif isinstance(parameter_value, (list, tuple)):
+            items = parameter_value
+        else:
             return False
-        if element is int:
-            return all(
-                isinstance(item, int) and not isinstance(item, bool) for item in parameter_value
-            )
-        return all(isinstance(item, element) for item in parameter_value)
+        if element is bytes:
+            return all(isinstance(item, bytes) and len(item) == 1 for item in items)
+        return all(isinstance(item, element) for item in items)
 
+
+# rclpy's class is ``Parameter.Type``: reprs read ``<Type.DOUBLE: 3>`` and pickles find it there
+ParameterType.__name__ = 'Type'
+ParameterType.__qualname__ = 'Parameter.Type'
 
 _ARRAY_TYPES: tuple[tuple[type, ParameterType], ...] = (
     (bytes, ParameterType.BYTE_ARRAY),
@@ -139,11 +149,9 @@ _SCALAR_TYPES: dict[ParameterType, type] = {
 
 
 class Parameter:
-    """A named, typed parameter value (``rclpy.parameter.Parameter``)."""
+    """A named, typed parameter value (``rclpy.parameter.Parameter``; compared by identity)."""
 
     Type = ParameterType
-
-    __slots__ = ('_name', '_type', '_value')
 
     def __init__(self, name: str, type_: ParameterType | None = None, value: Any = None) -> None:
         if type_ is None:
@@ -172,13 +180,6 @@ class Parameter:
     def value(self) -> Any:
         """The parameter's value (``None`` when NOT_SET)."""
         return self._value
-
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Parameter):
-            return NotImplemented
-        return (self._name, self._type, self._value) == (other._name, other._type, other._value)
-
-    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
         return f'Parameter(name={self._name!r}, type_={self._type}, value={self._value!r})'
@@ -333,13 +334,15 @@ class ParameterStore:
         self.event_sink: ParameterEventSink | None = None
         """Told ``(new, changed, deleted)`` after every successful set (``/parameter_events``)."""
         if automatically_declare_parameters_from_overrides:
-            self._declare_common(
-                list(self._overrides.values()),
-                {
-                    name: ParameterDescriptor(dynamic_typing=True)
-                    for name in self._overrides
-                    if name not in self._parameters
-                },
+            # rclpy declares every override statically typed (type of its value), overrides
+            # ignored (the value is the override already).
+            self.declare_parameters(
+                '',
+                [
+                    (name, parameter.value, ParameterDescriptor())
+                    for name, parameter in self._overrides.items()
+                ],
+                ignore_override=True,
             )
 
     @property
@@ -378,14 +381,14 @@ class ParameterStore:
     def declare_parameters(
         self,
         namespace: str,
-        parameters: Sequence[tuple[Any, ...]],
+        parameters: Sequence[Sequence[Any]],
         ignore_override: bool = False,
     ) -> list[Parameter]:
         """Declare several parameters: tuples of ``(name[, value or type[, descriptor]])``."""
         parameter_list: list[Parameter] = []
         descriptors: dict[str, ParameterDescriptor] = {}
         for index, entry in enumerate(parameters):
-            if not isinstance(entry, tuple) or not 1 <= len(entry) <= 3:
+            if not 1 <= len(entry) <= 3:  # rclpy checks only the length (a list works too)
                 msg = (
                     f'Invalid parameter tuple length at index {index} in parameters list: '
                     f'{entry}; expecting length between 1 and 3'
@@ -411,8 +414,13 @@ class ParameterStore:
             value: Any = None
             if len(entry) == 1:
                 warnings.warn(
-                    f"when declaring parameter named '{name}', declaring a parameter only "
-                    'providing its name is deprecated.',
+                    f"when declaring parameter named '{name}', "
+                    'declaring a parameter only providing its name is deprecated. '
+                    'You have to either:\n'
+                    '\t- Pass a name and a default value different to "PARAMETER NOT SET"'
+                    ' (and optionally a descriptor).\n'
+                    '\t- Pass a name and a parameter type.\n'
+                    '\t- Pass a name and a descriptor with `dynamic_typing=True',
                     stacklevel=3,
                 )
                 descriptor.dynamic_typing = True
@@ -500,20 +508,28 @@ class ParameterStore:
             return parameter
 
     def get_parameters(self, names: Iterable[str]) -> list[Parameter]:
-        """Return the parameters named in ``names`` (see :meth:`get_parameter`)."""
+        """
+        Return the parameters named in ``names`` (see :meth:`get_parameter`).
+
+        :raises TypeError: when a name is not a ``str`` (rclpy's text).
+        """
+        if not all(isinstance(name, str) for name in names):
+            msg = 'All names must be instances of type str'
+            raise TypeError(msg)
         return [self.get_parameter(name) for name in names]
 
     def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter:
-        """Return the parameter, else ``alternative_value`` (also for an uninitialized one)."""
+        """
+        Return the parameter, else ``alternative_value``.
+
+        As rclpy, the alternative also stands for a declared parameter without a value (type
+        NOT_SET), statically or dynamically typed.
+        """
         if alternative_value is None:
             alternative_value = Parameter(name, ParameterType.NOT_SET)
         with self._lock:
             parameter = self._parameters.get(name)
-            if parameter is None:
-                return alternative_value
-            if parameter.type_ is ParameterType.NOT_SET and not (
-                self._descriptors[name].dynamic_typing
-            ):
+            if parameter is None or parameter.type_ is ParameterType.NOT_SET:
                 return alternative_value
             return parameter
 
@@ -599,11 +615,9 @@ class ParameterStore:
                 if not result.successful:
                     return result
             for callback in list(self._on_set_callbacks):
-                result = callback(list(parameter_list))
-                if not getattr(result, 'successful', False):
-                    if not hasattr(result, 'successful'):
-                        msg = 'on-set parameters callback must return a SetParametersResult'
-                        raise TypeError(msg)
+                # rclpy passes its own list and reads ``successful`` (AttributeError on None)
+                result = callback(parameter_list)
+                if not result.successful:
                     return result
             new: list[Parameter] = []
             changed: list[Parameter] = []
@@ -622,16 +636,14 @@ class ParameterStore:
                 if descriptors is not None:
                     self._descriptors[parameter.name] = descriptors[parameter.name]
                 elif parameter.name not in self._descriptors:
-                    self._descriptors[parameter.name] = ParameterDescriptor(
-                        name=parameter.name, dynamic_typing=True
-                    )
+                    self._descriptors[parameter.name] = ParameterDescriptor(dynamic_typing=True)
                 self._parameters[parameter.name] = parameter
             post_callbacks = list(self._post_set_callbacks)
             event_sink = self.event_sink
         if event_sink is not None:
             event_sink(new, changed, deleted)
         for post_callback in post_callbacks:
-            post_callback(list(parameter_list))
+            post_callback(parameter_list)
         return SetParametersResult(successful=True)
 
     def _apply_descriptor(
