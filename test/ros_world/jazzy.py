@@ -41,21 +41,15 @@ def require_ros2_cli() -> str:
 
 def require_installed_tf_demo(env: dict[str, str]) -> None:
     """Skip unless tf_demo is installed in the sourced workspace (``ros2 run`` finds it)."""
-    require_ros2_cli()
-    completed = subprocess.run(
-        ['ros2', 'pkg', 'prefix', 'tf_demo'],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
+    require_package(
+        env,
+        'tf_demo',
+        'tf_demo is not installed in the sourced workspace (colcon build, then source it)',
     )
-    if completed.returncode != 0:
-        pytest.skip('tf_demo is not installed in the sourced workspace (colcon build, source it)')
 
 
-def require_package(env: dict[str, str], package: str) -> None:
-    """Skip unless the ROS package ``package`` is installed in the sourced environment."""
+def require_package(env: dict[str, str], package: str, reason: str = '') -> None:
+    """Skip (with ``reason``) unless the ROS package ``package`` is installed and sourced."""
     require_ros2_cli()
     completed = subprocess.run(
         ['ros2', 'pkg', 'prefix', package],
@@ -66,7 +60,7 @@ def require_package(env: dict[str, str], package: str) -> None:
         check=False,
     )
     if completed.returncode != 0:
-        pytest.skip(f'the ROS package {package} is not installed')
+        pytest.skip(reason or f'the ROS package {package} is not installed')
 
 
 def ros2(
