@@ -49,6 +49,45 @@ def random_node_name() -> str:
     return TOOL + '_' + ''.join(secrets.choice(alphabet) for _ in range(16))
 
 
+STATIC_TOPIC = '/tf_static'
+QOS_OVERRIDABLE = ('depth', 'history', 'reliability')
+
+
+def static_broadcaster_qos(node: Any) -> Any:
+    """
+    tf2's static broadcaster QoS, after upstream's ``qos_overrides./tf_static.publisher.*``.
+
+    tf2_ros' C++ StaticTransformBroadcaster publishes with ``QosOverridingOptions`` for depth,
+    history and reliability: read-only parameters with rclcpp's descriptions, set from
+    ``-p``/params files only.
+    """
+    from tf_demo.transport.parameters import ParameterDescriptor
+    from tf_demo.transport.qos import HistoryPolicy
+    from tf_demo.transport.qos import ReliabilityPolicy
+    from tf_demo.transport.qos import StaticBroadcasterQoS
+
+    qos = StaticBroadcasterQoS()
+    enums: dict[str, Any] = {'history': HistoryPolicy, 'reliability': ReliabilityPolicy}
+    for policy in QOS_OVERRIDABLE:
+        name = f'qos_overrides.{STATIC_TOPIC}.publisher.{policy}'
+        current = getattr(qos, policy)
+        default = current if policy == 'depth' else current.name.lower()
+        descriptor = ParameterDescriptor(
+            description=f'qos policy {{{policy}}} for publisher {{{STATIC_TOPIC}}}',
+            read_only=True,
+        )
+        value = node.declare_parameter(name, default, descriptor).value
+        try:
+            if policy == 'depth':
+                qos.depth = int(value)
+            else:
+                setattr(qos, policy, enums[policy][str(value).upper()])
+        except (KeyError, ValueError):
+            msg = f'invalid value {value!r} for parameter {name}'
+            raise ValueError(msg) from None
+    return qos
+
+
 def make_node(
     translation: tuple[float, float, float],
     rotation: tuple[float, float, float, float],
@@ -60,6 +99,7 @@ def make_node(
     from tf_demo.msgs.convert import fill_transform_stamped
     from tf_demo.ros import StaticTransformBroadcaster
     from tf_demo.transport.messages import geometry_msgs
+    from tf_demo.transport.parameters import ParameterDescriptor
 
     node = transport.create_node(random_node_name())
     values = {
@@ -74,7 +114,7 @@ def make_node(
         'child_frame_id': child_frame_id,
     }
     for name, value in values.items():
-        node.declare_parameter(name, value)
+        node.declare_parameter(name, value, ParameterDescriptor(read_only=True))
     if frame_id == child_frame_id:
         node.get_logger().error(
             f"cannot publish static transform from '{frame_id}' to '{child_frame_id}', exiting"
@@ -91,7 +131,7 @@ def make_node(
         translation,
         rotation,
     )
-    broadcaster = StaticTransformBroadcaster(node)
+    broadcaster = StaticTransformBroadcaster(node, static_broadcaster_qos(node))
     broadcaster.send_transform(message)
     node.get_logger().info(format_static_info(translation, rotation, frame_id, child_frame_id))
     node.static_broadcaster = broadcaster

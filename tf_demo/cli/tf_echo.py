@@ -36,7 +36,6 @@ from tf_demo.cli._args import EchoArgs
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._live import run_tool
-from tf_demo.cli.formatting import ECHO_EXTRAS_USAGE
 from tf_demo.cli.formatting import ECHO_USAGE
 from tf_demo.cli.formatting import format_echo_failure
 from tf_demo.cli.formatting import format_echo_failure_json
@@ -133,8 +132,7 @@ def main(args: list[str] | None = None) -> int:
     tool_args, ros_args = split_ros_args(args)
     options = parse_echo_args(tool_args)
     if options.show_usage:
-        _write(ECHO_USAGE)
-        sys.stderr.write(ECHO_EXTRAS_USAGE)
+        _write(ECHO_USAGE)  # upstream's usage only: stderr stays empty, as tf2_echo's
         return options.exit_code
     if options.error:
         print(options.error, file=sys.stderr, flush=True)

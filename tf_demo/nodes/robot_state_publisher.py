@@ -216,6 +216,7 @@ def _load_model(xml: str) -> RobotModel:
 def _build_node_class() -> type:
     """Define the node class on the selected backend's Node (imported only when a node runs)."""
     from tf_demo.transport import Node
+    from tf_demo.transport.logging import get_logger
     from tf_demo.transport.messages import geometry_msgs
     from tf_demo.transport.messages import sensor_msgs
     from tf_demo.transport.messages import std_msgs
@@ -336,8 +337,9 @@ def _build_node_class() -> type:
                 name = f'qos_overrides.{topic}.{entity}.{policy}'
                 current = getattr(profile, policy)
                 default = current if policy == 'depth' else current.name.lower()
-                descriptor = ParameterDescriptor(
-                    description=f'{policy} for {entity} `{topic}`', read_only=True
+                descriptor = ParameterDescriptor(  # rclcpp's text (upstream is C++)
+                    description=f'qos policy {{{policy}}} for {entity} {{{topic}}}',
+                    read_only=True,
                 )
                 value = self.declare_parameter(name, default, descriptor).value
                 try:
@@ -357,8 +359,10 @@ def _build_node_class() -> type:
 
         # -- model ---------------------------------------------------------------------------
         def _announce_model(self, xml: str) -> None:
+            # upstream's model warnings are kdl_parser's own (RCUTILS_LOG_WARN_NAMED)
+            kdl_parser_logger = get_logger('kdl_parser')
             for warning in self._model.warnings:
-                self.get_logger().warning(warning)
+                kdl_parser_logger.warning(warning)
             self._description_pub.publish(std_msgs.String(data=xml))
             self.get_logger().info('Robot initialized')
 
