@@ -655,11 +655,6 @@ STATIC_RUNNING_ARGS = [
             'qos_overrides./tf_static.publisher.depth:=3',
         ),
         id='qos-override',
-        marks=pytest.mark.xfail(
-            reason='known bug, reported: tf_demo.transport.ros_args refuses the parameter name '
-            "'qos_overrides./tf_static.publisher.depth' in a -p rule; rcl accepts it",
-            strict=False,
-        ),
     ),
 ]
 
@@ -1273,11 +1268,6 @@ def test_robot_state_publisher_subscribes_as_upstream(
     assert our_graph['subscriptions'] == their_graph['subscriptions']
 
 
-@pytest.mark.xfail(
-    reason='known bug, reported: tf_demo.transport.ros_args parses a -p value as strict YAML '
-    'and refuses URDF text that rcl accepts (panda.urdf has tabs)',
-    strict=False,
-)
 def test_robot_state_publisher_takes_the_description_on_the_command_line(
     jazzy_env: dict[str, str], second_domain: int
 ) -> None:

@@ -198,6 +198,47 @@ def test_params_file_tags_read_as_the_real_rcl_reads_them(tmp_path: Path, ros: N
     }
 
 
+PANDA_URDF = REPO_ROOT.parent / 'shared' / 'robots' / 'panda.urdf'
+
+
+def _override_rules() -> list[object]:
+    rules = [
+        pytest.param(['-p', 'qos_overrides./tf_static.publisher.depth:=3'], id='slash-name'),
+        pytest.param(['-p', 'a.b/c.d:=x'], id='dots'),
+    ]
+    if PANDA_URDF.is_file():  # a tab inside, which PyYAML's own scanner refuses and rcl's takes
+        rule = ['-p', f'robot_description:={PANDA_URDF.read_text(encoding="utf-8")}']
+        rules.append(pytest.param(rule, id='panda-urdf'))
+    return rules
+
+
+@pytest.mark.parametrize('rule', _override_rules())
+def test_param_rules_read_as_rcl_reads_them(rule: list[str]) -> None:
+    """Names with '/' inside tokens, and values only libyaml's scanner (rcl's) accepts."""
+    parsed = parse_ros_args(['--ros-args', *rule])
+    assert len(parsed.parameter_overrides('/n')) == 1
+
+
+@pytest.mark.rclpy_world
+@pytest.mark.parametrize('rule', _override_rules())
+def test_param_rules_give_the_real_rcls_values(rule: list[str], ros: None) -> None:
+    """Each rule through the real rcl gives the same name, value and type as ours."""
+    from tf_demo import transport
+
+    ours = {
+        n: p.value
+        for n, p in parse_ros_args(['--ros-args', *rule]).parameter_overrides('/n').items()
+    }
+    node = transport.create_node(
+        'n', cli_args=['--ros-args', *rule], automatically_declare_parameters_from_overrides=True
+    )
+    try:
+        real = {name: node.get_parameter(name).value for name in ours}
+    finally:
+        node.destroy_node()
+    assert real == ours
+
+
 @pytest.mark.parametrize(
     ('argv', 'message'),
     [

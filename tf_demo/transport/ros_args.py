@@ -86,7 +86,9 @@ ROS_ARGS_USAGE = (
 
 _TOKEN = re.compile(r'[A-Za-z_][A-Za-z0-9_]*')
 _NODE_TOKEN = re.compile(r'[A-Za-z0-9_]+')
-_PARAM_NAME = re.compile(r'[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*')
+# rcl: name tokens (runs of tokens and '/') joined by '.', e.g. qos_overrides./tf.publisher.depth
+_PARAM_NAME_TOKEN = r'(?:[A-Za-z_][A-Za-z0-9_]*|/)+'
+_PARAM_NAME = re.compile(rf'{_PARAM_NAME_TOKEN}(?:\.{_PARAM_NAME_TOKEN})*')
 
 
 class RosArgsError(ValueError):
@@ -329,7 +331,12 @@ class _RuleError(ValueError):
     """Why one rule is malformed (wrapped into a RosArgsError)."""
 
 
-class _YamlLoader(yaml.SafeLoader):
+# libyaml, as rcl uses, where PyYAML has it: its scanner accepts what rcl accepts (e.g. a tab
+# inside a multi-line value such as a URDF given with -p robot_description:=...).
+_SafeLoaderBase: type[yaml.SafeLoader] = getattr(yaml, 'CSafeLoader', yaml.SafeLoader)
+
+
+class _YamlLoader(_SafeLoaderBase):  # type: ignore[valid-type,misc]
     """YAML 1.1 scalars as rcl's parser types them, without dates (they stay strings)."""
 
 
@@ -351,8 +358,8 @@ def _ignore_tag(loader: _YamlLoader, _suffix: str, node: yaml.Node) -> Any:
     if isinstance(node, yaml.MappingNode):
         return loader.construct_mapping(node, deep=True)
     style = getattr(node, 'style', None)
-    plain = style is None
-    tag = loader.resolve(yaml.ScalarNode, node.value, (plain, not plain))  # type: ignore[no-untyped-call]
+    plain = not style  # plain scalars: None (PyYAML) or '' (libyaml)
+    tag = loader.resolve(yaml.ScalarNode, node.value, (plain, not plain))
     return loader.construct_object(yaml.ScalarNode(tag, node.value, style=style))
 
 
