@@ -234,10 +234,18 @@ def _run_installed(
     try:
         try:
             node = factory()
-        except _config_error_types() as error:
+        except Exception as error:
+            if stop.event.is_set() or not ok():
+                # Ctrl-C or SIGTERM while the node was being built (under rclpy its handler
+                # shuts the context down under the constructor): a stop, not an error.
+                return 0
+            if not isinstance(error, _config_error_types()):
+                raise
             text = ' '.join(str(error).split()) or type(error).__name__
             print(f'{program}: error: {text}', file=sys.stderr)
             return 1
+        if stop.event.is_set() or not ok():
+            return 0  # stopped while starting: no executor on a context that is gone
         executor = backend_module().SingleThreadedExecutor()
         executor.add_node(node)
         while not stop.event.is_set() and ok():
