@@ -203,7 +203,9 @@ def test_static_tf_pub_bad_parameter_exits_1_with_one_line(spawn: Any, tmp_path:
     assert 'Traceback' not in err
 
 
-def test_tf_listener_warns_then_logs_the_translation(spawn: Any, dds_env: dict[str, str]) -> None:
+def test_tf_listener_warns_then_logs_the_translation(
+    spawn: Any, world_env: dict[str, str]
+) -> None:
     """Without data it warns 'Could not transform ...'; with the demo running it logs it."""
     listener = spawn.start('tf_listener', '--ros-args', '-p', 'period:=0.3')
     output = ProcessOutput(listener)
@@ -247,7 +249,7 @@ def test_odom_tf_broadcaster_republishes_odometry_with_its_stamp(spawn: Any, ros
     assert xyzw(t) == (0.0, 0.0, math.sqrt(0.5), math.sqrt(0.5))
 
 
-def test_point_transformer_logs_the_point_in_map(spawn: Any, dds_env: dict[str, str]) -> None:
+def test_point_transformer_logs_the_point_in_map(spawn: Any, world_env: dict[str, str]) -> None:
     """With map -> base_link = (1, 2, 0) yawed 90 degrees, (1, 0, 0) is (1, 3, 0) in map."""
     spawn.start(
         'static_tf_pub', '--ros-args',

@@ -80,7 +80,7 @@ def wait_for_line(process: subprocess.Popen[str], text: str) -> None:
 
 @pytest.mark.parametrize('signum', [signal.SIGINT, signal.SIGTERM])
 def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
-    dds_env: dict[str, str], tmp_path: Path, signum: signal.Signals
+    world_env: dict[str, str], tmp_path: Path, signum: signal.Signals
 ) -> None:
     """After SIGINT or SIGTERM the node exits 0 without traceback and its last sample arrives."""
     transport.init(['test'])
@@ -95,7 +95,7 @@ def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
         )
         executor = transport.SingleThreadedExecutor()
         executor.add_node(listener)
-        process = start_counter(tmp_path, dds_env)
+        process = start_counter(tmp_path, world_env)
         try:
             wait_for_line(process, 'counting')
             deadline = time.monotonic() + 30
@@ -121,20 +121,20 @@ def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
 
 
 def test_config_error_from_the_node_exits_1_on_one_line(
-    dds_env: dict[str, str], tmp_path: Path
+    world_env: dict[str, str], tmp_path: Path
 ) -> None:
     """A NodeConfigError raised by the constructor prints one line and exits 1."""
-    process = start_counter(tmp_path, dds_env, '--ros-args', '-p', 'period:=-1.0')
+    process = start_counter(tmp_path, world_env, '--ros-args', '-p', 'period:=-1.0')
     _, stderr = process.communicate(timeout=60)
     assert process.returncode == 1
     assert stderr.strip().splitlines() == ['counter.py: error: period must be positive, got -1.0']
 
 
 def test_parameter_type_error_exits_1_with_rclpys_text(
-    dds_env: dict[str, str], tmp_path: Path
+    world_env: dict[str, str], tmp_path: Path
 ) -> None:
     """An override of the wrong type (int for a double) is a config error, not a traceback."""
-    process = start_counter(tmp_path, dds_env, '--ros-args', '-p', 'period:=1')
+    process = start_counter(tmp_path, world_env, '--ros-args', '-p', 'period:=1')
     _, stderr = process.communicate(timeout=60)
     assert process.returncode == 1
     assert stderr.strip().splitlines() == [

@@ -44,7 +44,7 @@ def spin_until(executor, condition, publish=None, limit_s: float = 20.0) -> bool
     return condition()
 
 
-def test_clock_topic_drives_now_when_use_sim_time_is_set(dds_env: dict[str, str]) -> None:
+def test_clock_topic_drives_now_when_use_sim_time_is_set(world_env: dict[str, str]) -> None:
     """With -p use_sim_time:=true, now() follows /clock; turning it off returns to system time."""
     transport.init(['test'])
     try:
@@ -83,7 +83,7 @@ def test_clock_topic_drives_now_when_use_sim_time_is_set(dds_env: dict[str, str]
         transport.shutdown()
 
 
-def test_without_use_sim_time_clock_messages_are_ignored(dds_env: dict[str, str]) -> None:
+def test_without_use_sim_time_clock_messages_are_ignored(world_env: dict[str, str]) -> None:
     """A node without use_sim_time keeps system time even while /clock is published."""
     transport.init(['test'])
     try:
@@ -123,7 +123,7 @@ sys.exit(run_node(StampReporter))
 
 
 def test_node_process_with_use_sim_time_reports_clock_topic_time(
-    dds_env: dict[str, str], tmp_path: Path
+    world_env: dict[str, str], tmp_path: Path
 ) -> None:
     """A node process started with use_sim_time:=true stamps with /clock time, not wall time."""
     script = tmp_path / 'reporter.py'
@@ -131,7 +131,7 @@ def test_node_process_with_use_sim_time_reports_clock_topic_time(
     transport.init(['test'])
     process = subprocess.Popen(
         [sys.executable, str(script), '--ros-args', '-p', 'use_sim_time:=true'],
-        env=dds_env,
+        env=world_env,
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,

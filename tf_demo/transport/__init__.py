@@ -253,7 +253,10 @@ def _run_installed(
     except KeyboardInterrupt:
         pass
     except Exception as error:
-        if type(error).__name__ != 'ExternalShutdownException':
+        # rclpy's signal handler shuts the context down from under a spin: its executor then
+        # raises ExternalShutdownException, or, in a narrow race, RCLError (invalid context).
+        stopping = stop.event.is_set() or not ok()
+        if type(error).__name__ != 'ExternalShutdownException' and not stopping:
             raise
     finally:
         _finish(node)
