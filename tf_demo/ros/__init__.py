@@ -31,7 +31,6 @@ from tf_demo.ros.buffer import Buffer
 from tf_demo.ros.buffer import ns_from_duration
 from tf_demo.ros.buffer import ns_from_time
 from tf_demo.ros.buffer import TypeException
-from tf_demo.ros.future import Future
 from tf_demo.ros.geometry import do_transform_point
 from tf_demo.ros.geometry import do_transform_polygon_stamped
 from tf_demo.ros.geometry import do_transform_pose
@@ -45,6 +44,7 @@ from tf_demo.ros.geometry import TRANSFORM_FUNCTIONS
 from tf_demo.ros.static_transform_broadcaster import StaticTransformBroadcaster
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.ros.transform_listener import TransformListener
+from tf_demo.transport.future import Future
 
 __all__ = [
     'TRANSFORM_FUNCTIONS',

@@ -70,10 +70,10 @@ from tf_demo.core.exceptions import TimeoutException
 from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.convert import transform_stamped_args
-from tf_demo.ros.future import Future
 from tf_demo.ros.geometry import ros_type_name
 from tf_demo.ros.geometry import TRANSFORM_FUNCTIONS
 from tf_demo.ros.geometry import TransformFunction
+from tf_demo.transport.future import Future
 
 DEFAULT_CACHE_TIME_NS = 10_000_000_000
 JUMP_BACK_CLEAR_THRESHOLD_NS = 1_000_000_000

@@ -35,7 +35,6 @@ executors serve them like subscriptions (read condition, callback group, ``take_
 from __future__ import annotations
 
 from collections.abc import Callable
-from collections.abc import Generator
 import ctypes
 import itertools
 import struct
@@ -43,8 +42,6 @@ import threading
 import time
 from typing import Any
 from typing import cast
-from typing import Generic
-from typing import TypeVar
 import weakref
 
 from cyclonedds import _clayer
@@ -53,6 +50,7 @@ from cyclonedds.builtin_types import endpoint_constructor
 from cyclonedds.qos import Policy
 from tf_demo.msgs import cdr
 from tf_demo.transport import dds_wire
+from tf_demo.transport.future import Future
 from tf_demo.transport.qos import qos_profile_services_default
 
 __all__ = [
@@ -69,7 +67,6 @@ __all__ = [
     'request_topic',
 ]
 
-T = TypeVar('T')
 
 _TAKE_BATCH = 64
 _HEADER = {1: struct.Struct('<Qq'), 0: struct.Struct('>Qq')}
@@ -171,94 +168,6 @@ def parse_user_data(data: bytes) -> dict[str, str]:
         if sep and key:
             result[key.decode(errors='replace')] = value.decode(errors='replace')
     return result
-
-
-# --------------------------------------------------------------------------------------------
-# Futures
-# --------------------------------------------------------------------------------------------
-
-
-class Future(Generic[T]):
-    """
-    The pending result of a service call (``rclpy.task.Future`` subset).
-
-    Thread safe; done callbacks run in the thread that completes it, at once when added to a
-    future that is already done. Awaitable from executor tasks.
-    """
-
-    def __init__(self) -> None:
-        """Create a pending future."""
-        self._lock = threading.Lock()
-        self._done = threading.Event()
-        self._result: T | None = None
-        self._exception: BaseException | None = None
-        self._cancelled = False
-        self._callbacks: list[Callable[[Future[T]], Any]] = []
-
-    def done(self) -> bool:
-        """Return whether the future has a result, an exception or was cancelled."""
-        return self._done.is_set()
-
-    def cancelled(self) -> bool:
-        """Return whether the future was cancelled."""
-        return self._cancelled
-
-    def cancel(self) -> None:
-        """Cancel the future if it is pending."""
-        self._complete(cancelled=True)
-
-    def result(self) -> T | None:
-        """Return the result (None while pending), or raise the exception that was set."""
-        if self._exception is not None:
-            raise self._exception
-        return self._result
-
-    def exception(self) -> BaseException | None:
-        """Return the exception that was set, if any."""
-        return self._exception
-
-    def set_result(self, result: T) -> None:
-        """Complete the future with ``result``."""
-        self._complete(result=result)
-
-    def set_exception(self, exception: BaseException) -> None:
-        """Complete the future with ``exception``."""
-        self._complete(exception=exception)
-
-    def add_done_callback(self, callback: Callable[[Future[T]], Any]) -> None:
-        """Call ``callback(future)`` once the future is done."""
-        with self._lock:
-            if not self._done.is_set():
-                self._callbacks.append(callback)
-                return
-        callback(self)
-
-    def wait(self, timeout_sec: float | None = None) -> bool:
-        """Block until the future is done or ``timeout_sec`` passed; whether it is done."""
-        return self._done.wait(timeout_sec)
-
-    def _complete(
-        self,
-        *,
-        result: T | None = None,
-        exception: BaseException | None = None,
-        cancelled: bool = False,
-    ) -> None:
-        with self._lock:
-            if self._done.is_set():
-                return
-            self._result = result
-            self._exception = exception
-            self._cancelled = cancelled
-            self._done.set()
-            callbacks, self._callbacks = self._callbacks, []
-        for callback in callbacks:
-            callback(self)
-
-    def __await__(self) -> Generator[None, None, T | None]:
-        while not self.done():
-            yield
-        return self.result()
 
 
 # --------------------------------------------------------------------------------------------

@@ -13,7 +13,7 @@
 # limitations under the License.
 
 """
-A thread-safe future with ``rclpy.task.Future``'s API, for the buffer's asynchronous waits.
+A thread-safe future with ``rclpy.task.Future``'s API: the buffer's waits, service calls.
 
 It can be awaited from an rclpy or tf_demo executor task (``__await__`` yields until done, as
 rclpy's does), passed to ``spin_until_future_complete`` (which only needs ``done()`` and
