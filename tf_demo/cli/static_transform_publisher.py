@@ -58,34 +58,14 @@ def static_broadcaster_qos(node: Any) -> Any:
     tf2's static broadcaster QoS, after upstream's ``qos_overrides./tf_static.publisher.*``.
 
     tf2_ros' C++ StaticTransformBroadcaster publishes with ``QosOverridingOptions`` for depth,
-    history and reliability: read-only parameters with rclcpp's descriptions, set from
-    ``-p``/params files only.
+    history and reliability.
     """
-    from tf_demo.transport.parameters import ParameterDescriptor
-    from tf_demo.transport.qos import HistoryPolicy
-    from tf_demo.transport.qos import ReliabilityPolicy
+    from tf_demo.ros.node_helpers import declare_qos_overrides
     from tf_demo.transport.qos import StaticBroadcasterQoS
 
-    qos = StaticBroadcasterQoS()
-    enums: dict[str, Any] = {'history': HistoryPolicy, 'reliability': ReliabilityPolicy}
-    for policy in QOS_OVERRIDABLE:
-        name = f'qos_overrides.{STATIC_TOPIC}.publisher.{policy}'
-        current = getattr(qos, policy)
-        default = current if policy == 'depth' else current.name.lower()
-        descriptor = ParameterDescriptor(
-            description=f'qos policy {{{policy}}} for publisher {{{STATIC_TOPIC}}}',
-            read_only=True,
-        )
-        value = node.declare_parameter(name, default, descriptor).value
-        try:
-            if policy == 'depth':
-                qos.depth = int(value)
-            else:
-                setattr(qos, policy, enums[policy][str(value).upper()])
-        except (KeyError, ValueError):
-            msg = f'invalid value {value!r} for parameter {name}'
-            raise ValueError(msg) from None
-    return qos
+    return declare_qos_overrides(
+        node, STATIC_TOPIC, 'publisher', StaticBroadcasterQoS(), QOS_OVERRIDABLE
+    )
 
 
 def make_node(

@@ -215,6 +215,7 @@ def _load_model(xml: str) -> RobotModel:
 
 def _build_node_class() -> type:
     """Define the node class on the selected backend's Node (imported only when a node runs)."""
+    from tf_demo.ros.node_helpers import declare_qos_overrides
     from tf_demo.transport import Node
     from tf_demo.transport.logging import get_logger
     from tf_demo.transport.messages import geometry_msgs
@@ -289,15 +290,15 @@ def _build_node_class() -> type:
             self._tf_pub = self.create_publisher(
                 tf2_msgs.TFMessage,
                 '/tf',
-                self._qos_with_overrides(
-                    '/tf', 'publisher', DynamicBroadcasterQoS(), _TF_OVERRIDABLE
+                declare_qos_overrides(
+                    self, '/tf', 'publisher', DynamicBroadcasterQoS(), _TF_OVERRIDABLE
                 ),
             )
             self._tf_static_pub = self.create_publisher(
                 tf2_msgs.TFMessage,
                 '/tf_static',
-                self._qos_with_overrides(
-                    '/tf_static', 'publisher', _copy_qos(latched), _TF_STATIC_OVERRIDABLE
+                declare_qos_overrides(
+                    self, '/tf_static', 'publisher', _copy_qos(latched), _TF_STATIC_OVERRIDABLE
                 ),
             )
             self.add_on_set_parameters_callback(self._on_set_parameters)
@@ -305,7 +306,8 @@ def _build_node_class() -> type:
                 sensor_msgs.JointState,
                 'joint_states',
                 self._on_joint_state,
-                self._qos_with_overrides(
+                declare_qos_overrides(
+                    self,
                     self._resolved('joint_states'),
                     'subscription',
                     _copy_qos(qos_profile_sensor_data),
@@ -321,41 +323,6 @@ def _build_node_class() -> type:
             except (AttributeError, TypeError):
                 namespace = self.get_namespace().rstrip('/')
                 return f'{namespace}/{topic}'
-
-        def _qos_with_overrides(
-            self, topic: str, entity: str, profile: Any, policies: tuple[str, ...]
-        ) -> Any:
-            """
-            Apply ``qos_overrides.<topic>.<entity>.<policy>`` parameters (read at start).
-
-            Declared read-only, as rclpy's ``_declare_qos_parameters`` and rclcpp do: they take
-            effect from overrides (``-p``, params files) only.
-            """
-            from tf_demo.transport.parameters import ParameterDescriptor
-
-            for policy in policies:
-                name = f'qos_overrides.{topic}.{entity}.{policy}'
-                current = getattr(profile, policy)
-                default = current if policy == 'depth' else current.name.lower()
-                descriptor = ParameterDescriptor(  # rclcpp's text (upstream is C++)
-                    description=f'qos policy {{{policy}}} for {entity} {{{topic}}}',
-                    read_only=True,
-                )
-                value = self.declare_parameter(name, default, descriptor).value
-                try:
-                    if policy == 'depth':
-                        profile.depth = int(value)
-                    else:
-                        enum = {
-                            'history': HistoryPolicy,
-                            'reliability': ReliabilityPolicy,
-                            'durability': DurabilityPolicy,
-                        }[policy]
-                        setattr(profile, policy, enum[str(value).upper()])
-                except (KeyError, ValueError):
-                    msg = f'invalid value {value!r} for parameter {name}'
-                    raise RobotDescriptionError(msg) from None
-            return profile
 
         # -- model ---------------------------------------------------------------------------
         def _announce_model(self, xml: str) -> None:

@@ -171,6 +171,46 @@ def make_transform_stamped(
     return msg
 
 
+def declare_qos_overrides(
+    node: Any, topic: str, entity: str, profile: Any, policies: Sequence[str]
+) -> Any:
+    """
+    Apply rclcpp's ``qos_overrides.<topic>.<entity>.<policy>`` parameters to ``profile``.
+
+    Declared read-only with rclcpp's descriptions, as upstream's C++ nodes declare them: they
+    take effect from overrides (``-p``, params files) only.
+
+    :raises NodeConfigError: for a value that is not a policy of that name.
+    """
+    from tf_demo.transport.parameters import ParameterDescriptor
+    from tf_demo.transport.qos import DurabilityPolicy
+    from tf_demo.transport.qos import HistoryPolicy
+    from tf_demo.transport.qos import ReliabilityPolicy
+
+    enums: dict[str, Any] = {
+        'history': HistoryPolicy,
+        'reliability': ReliabilityPolicy,
+        'durability': DurabilityPolicy,
+    }
+    for policy in policies:
+        name = f'qos_overrides.{topic}.{entity}.{policy}'
+        current = getattr(profile, policy)
+        default = current if policy == 'depth' else current.name.lower()
+        descriptor = ParameterDescriptor(
+            description=f'qos policy {{{policy}}} for {entity} {{{topic}}}', read_only=True
+        )
+        value = node.declare_parameter(name, default, descriptor).value
+        try:
+            if policy == 'depth':
+                profile.depth = int(value)
+            else:
+                setattr(profile, policy, enums[policy][str(value).upper()])
+        except (KeyError, ValueError):
+            msg = f'invalid value {value!r} for parameter {name}'
+            raise NodeConfigError(msg) from None
+    return profile
+
+
 def now_ns(node: Any) -> int:
     """Return the node clock's current time in integer nanoseconds."""
     return int(node.get_clock().now().nanoseconds)
