@@ -231,7 +231,12 @@ def _run_installed(
         print(f'{program}: error: {error}', file=sys.stderr)
         return 1
     node: Any = None
+    executor: Any = None
     try:
+        # The executor is made first: under rclpy a Ctrl-C shuts the context down from
+        # rclpy's signal thread, and an executor built on a context going away prints
+        # rclpy's own "Exception ignored" tracebacks. Building the node is the long window.
+        executor = backend_module().SingleThreadedExecutor()
         try:
             node = factory()
         except Exception as error:
@@ -245,8 +250,7 @@ def _run_installed(
             print(f'{program}: error: {text}', file=sys.stderr)
             return 1
         if stop.event.is_set() or not ok():
-            return 0  # stopped while starting: no executor on a context that is gone
-        executor = backend_module().SingleThreadedExecutor()
+            return 0  # stopped while starting: nothing to spin on a context that is gone
         executor.add_node(node)
         while not stop.event.is_set() and ok():
             executor.spin_once(timeout_sec=0.1)
@@ -259,18 +263,20 @@ def _run_installed(
         if type(error).__name__ != 'ExternalShutdownException' and not stopping:
             raise
     finally:
-        _finish(node)
+        _finish(executor, node)
     return 0
 
 
-def _finish(node: Any) -> None:
+def _finish(executor: Any, node: Any) -> None:
     """
-    Destroy the node (flushing its publishers) and shut the backend down, quietly.
+    Shut the executor down, destroy the node (flushing its publishers) and the backend, quietly.
 
     A Ctrl-C while this runs skips the rest of the clean-up instead of printing a traceback.
     """
     try:
         try:
+            if executor is not None:
+                executor.shutdown()
             if node is not None:
                 node.destroy_node()
         finally:
