@@ -55,6 +55,8 @@ import os
 from pathlib import Path
 from typing import Any
 
+from tf_demo.core.files import InputFileError
+from tf_demo.core.files import read_text_file
 import yaml
 
 SCHEMA_KEY = 'tf_demo_transforms'
@@ -452,24 +454,9 @@ def read_snapshot(path: str | os.PathLike[str]) -> Snapshot:
     """Read and validate the snapshot file at ``path`` (see :func:`parse_snapshot`)."""
     source = os.fspath(path)
     try:
-        size = os.stat(source).st_size
-        if size > MAX_FILE_BYTES:
-            raise SnapshotError(f'{source}: file is larger than {MAX_FILE_BYTES} bytes ({size})')
-        with open(source, 'rb') as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)
-    except FileNotFoundError:
-        raise SnapshotError(f'{source}: no such file') from None
-    except IsADirectoryError:
-        raise SnapshotError(f'{source}: is a directory, not a snapshot file') from None
-    except OSError as error:
-        raise SnapshotError(f'{source}: cannot read ({error.strerror})') from None
-    if len(data) > MAX_FILE_BYTES:
-        raise SnapshotError(f'{source}: file is larger than {MAX_FILE_BYTES} bytes')
-    try:
-        text = data.decode('utf-8')
-    except UnicodeDecodeError as error:
-        line = data[: error.start].count(b'\n') + 1
-        raise SnapshotError(f'{source}:{line}: not UTF-8 text') from None
+        text = read_text_file(source, MAX_FILE_BYTES)
+    except InputFileError as error:
+        raise SnapshotError(str(error)) from None
     return parse_snapshot(text, source)
 
 
