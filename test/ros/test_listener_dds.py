@@ -236,7 +236,7 @@ def test_message_callbacks_skip_garbage_and_malformed_bytes(ros: None) -> None:
     listener.callback(message)
     listener.static_callback(message)
     if listener.raw_decoding:  # the standalone world's bytes path
-        listener._raw_callback(b'\x00\x01\x00\x00\xff\xff')
+        listener._raw_callback(b'\x00\x01\x00\x00\xff\xff', {'publisher_gid': bytes(16)})
     assert buffer.can_transform('a', 'ok', S)
     assert not buffer.can_transform('a', 'nan', S)
     listener.unregister()

@@ -70,6 +70,8 @@ from tf_demo.core.exceptions import TimeoutException
 from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.convert import transform_stamped_args
+from tf_demo.msgs.log_throttle import PerWriterThrottle
+from tf_demo.msgs.log_throttle import Writer
 from tf_demo.ros.geometry import ros_type_name
 from tf_demo.ros.geometry import TRANSFORM_FUNCTIONS
 from tf_demo.ros.geometry import TransformFunction
@@ -82,6 +84,9 @@ POOL_THREAD_PREFIX = 'ThreadPoolExecutor'
 """Name prefix of ``concurrent.futures`` worker threads (rclpy's MultiThreadedExecutor)."""
 MAX_WAIT_SLICE_S = 1.0
 """Longest single condition wait; bounds how late a deadline on a silent clock is noticed."""
+
+DIRECT_WRITER = 'direct set_transform calls'
+"""Who :meth:`Buffer.set_log_source` names when no listener said who sent a transform."""
 
 DEDICATED_THREAD_WARNING = (
     'Do not call canTransform or lookupTransform with a timeout unless you are using another '
@@ -185,6 +190,8 @@ class Buffer(BufferCore):
         cache_time_ns = (
             DEFAULT_CACHE_TIME_NS if cache_time is None else ns_from_duration(cache_time)
         )
+        self._rejections = PerWriterThrottle('rejected transforms')
+        self._log_source = threading.local()
         super().__init__(cache_time_ns, log=self._log_core)
         self._node = node
         self._condition = threading.Condition()
@@ -210,7 +217,29 @@ class Buffer(BufferCore):
             return self._node.get_logger()
         return _buffer_logger()
 
+    def set_log_source(self, writer: Writer | None) -> None:
+        """
+        Name who sent the transforms this thread inserts next (the listener calls it).
+
+        tf2's lines about rejected transforms (``TF_NAN_INPUT``, ``TF_OLD_DATA``...) are
+        throttled per writer and kind: the first is logged, then a count every few seconds.
+        ``None`` means direct calls of :meth:`set_transform`.
+        """
+        self._log_source.writer = writer
+
+    def log_pending_rejections(self) -> None:
+        """Log the counts of rejected transforms not reported yet."""
+        for line in self._rejections.pending():
+            self._emit(logging.WARNING, line)
+
     def _log_core(self, level: int, text: str) -> None:
+        writer = getattr(self._log_source, 'writer', None) or DIRECT_WRITER
+        kind = text.split(None, 1)[0].rstrip(':') if text.startswith('TF_') else ''
+        line = self._rejections.line(writer, text, kind)
+        if line is not None:
+            self._emit(level, line)
+
+    def _emit(self, level: int, text: str) -> None:
         try:
             logger = self._logger()
             if level >= logging.ERROR:

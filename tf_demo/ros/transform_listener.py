@@ -24,6 +24,10 @@ Compatible with tf2_ros's Python listener (plus rolling's ``tf_topic``/``tf_stat
   is marked as fed by a dedicated thread, which makes blocking waits safe everywhere.
 - a transform the buffer rejects (NaN, empty frame id, ...) is logged and skipped; the rest of
   the message is still used;
+- bad samples cannot flood the log: the first malformed sample or rejected transform of each
+  writer is logged in full, the following ones as a count every few seconds (see
+  :mod:`tf_demo.msgs.log_throttle`). The standalone world names the writer by its GUID; rclpy
+  (Jazzy) does not tell a subscription who wrote a sample, so there the count is per topic;
 - in the standalone world the subscriptions take the serialised bytes and decode them straight
   into the buffer's core (no message objects), which is the listener's hot path.
 
@@ -35,6 +39,8 @@ from __future__ import annotations
 import contextlib
 import threading
 from typing import Any
+
+from tf_demo.msgs.log_throttle import PerWriterThrottle
 
 DEFAULT_TF_TOPIC = '/tf'
 DEFAULT_STATIC_TF_TOPIC = '/tf_static'
@@ -91,6 +97,10 @@ class TransformListener:
         self._executor: Any = None
         self._private_node: Any = None
         self.dedicated_listener_thread: threading.Thread | None = None
+        self._malformed = PerWriterThrottle('malformed samples')
+        self._set_log_source = getattr(buffer, 'set_log_source', None)
+        self._tf_topic = tf_topic
+        self._tf_static_topic = tf_static_topic
         host = node
         if spin_thread:
             host = self._private_node = _create_private_node(
@@ -154,62 +164,93 @@ class TransformListener:
 
     def callback(self, data: Any) -> None:
         """Insert every transform of a ``/tf`` message."""
-        self._insert_all(data, is_static=False)
+        self._insert_all(data, f"a writer on '{self._tf_topic}'", is_static=False)
 
     def static_callback(self, data: Any) -> None:
         """Insert every transform of a ``/tf_static`` message."""
-        self._insert_all(data, is_static=True)
+        self._insert_all(data, f"a writer on '{self._tf_static_topic}'", is_static=True)
 
-    def _raw_callback(self, data: bytes) -> None:
-        self._insert_raw(data, is_static=False)
+    def _raw_callback(self, data: bytes, info: dict[str, Any]) -> None:
+        self._insert_raw(data, info['publisher_gid'], is_static=False)
 
-    def _raw_static_callback(self, data: bytes) -> None:
-        self._insert_raw(data, is_static=True)
+    def _raw_static_callback(self, data: bytes, info: dict[str, Any]) -> None:
+        self._insert_raw(data, info['publisher_gid'], is_static=True)
 
-    def _insert_raw(self, data: bytes, *, is_static: bool) -> None:
+    def _insert_raw(self, data: bytes, writer: bytes, *, is_static: bool) -> None:
         """Decode serialised TFMessage bytes straight into the core (no message objects)."""
         buffer = self.buffer
         buffer.note_feeder_thread()
         try:
             transforms = self._decode_transforms(data)
         except self._decode_error as error:
-            self.node.get_logger().error(f'Dropping a malformed TFMessage: {error}')
+            self._log_throttled(writer, f'Dropping a malformed TFMessage: {error}')
             return
         insert = self._core_insert
-        for parent, child, stamp_ns, translation, rotation in transforms:
-            try:
-                insert(
-                    buffer,
-                    parent,
-                    child,
-                    stamp_ns,
-                    translation,
-                    rotation,
-                    DEFAULT_AUTHORITY,
-                    is_static,
-                )
-            except Exception as error:
-                self._log_insert_failure(parent, child, error)
+        buffer.set_log_source(writer)
+        try:
+            for parent, child, stamp_ns, translation, rotation in transforms:
+                try:
+                    insert(
+                        buffer,
+                        parent,
+                        child,
+                        stamp_ns,
+                        translation,
+                        rotation,
+                        DEFAULT_AUTHORITY,
+                        is_static,
+                    )
+                except Exception as error:
+                    self._log_insert_failure(writer, parent, child, error)
+        finally:
+            buffer.set_log_source(None)
 
-    def _insert_all(self, data: Any, *, is_static: bool) -> None:
+    def _insert_all(self, data: Any, writer: str, *, is_static: bool) -> None:
         note = getattr(self.buffer, 'note_feeder_thread', None)
         if note is not None:
             note()
         insert = self.buffer.set_transform_static if is_static else self.buffer.set_transform
-        for transform in data.transforms:
-            try:
-                insert(transform, DEFAULT_AUTHORITY)
-            except Exception as error:
-                self._log_insert_failure(
-                    getattr(getattr(transform, 'header', None), 'frame_id', '?'),
-                    getattr(transform, 'child_frame_id', '?'),
-                    error,
-                )
+        set_source = self._set_log_source
+        if set_source is not None:
+            set_source(writer)
+        try:
+            for transform in data.transforms:
+                try:
+                    insert(transform, DEFAULT_AUTHORITY)
+                except Exception as error:
+                    self._log_insert_failure(
+                        writer,
+                        getattr(getattr(transform, 'header', None), 'frame_id', '?'),
+                        getattr(transform, 'child_frame_id', '?'),
+                        error,
+                    )
+        finally:
+            if set_source is not None:
+                set_source(None)
 
-    def _log_insert_failure(self, parent: str, child: str, error: Exception) -> None:
-        self.node.get_logger().error(
-            f'Failure to set received transform from {child} to {parent} with error: {error}'
+    def _log_insert_failure(
+        self, writer: bytes | str, parent: str, child: str, error: Exception
+    ) -> None:
+        self._log_throttled(
+            writer,
+            f'Failure to set received transform from {child} to {parent} with error: {error}',
+            'set_transform',
         )
+
+    def _log_throttled(self, writer: bytes | str, text: str, kind: str = '') -> None:
+        """Log ``text`` if it is the first of its writer (and kind), else count it."""
+        line = self._malformed.line(writer, text, kind)
+        if line is not None:
+            self.node.get_logger().error(line)
+
+    def _log_pending(self) -> None:
+        """Log the counts of bad samples not reported yet (at unregister)."""
+        lines = self._malformed.pending()
+        log_pending = getattr(self.buffer, 'log_pending_rejections', None)
+        if log_pending is not None:
+            log_pending()
+        for line in lines:
+            _quietly(lambda text=line: self.node.get_logger().error(text))
 
     def unregister(self) -> None:
         """Stop the private thread (if any) and destroy the subscriptions."""
@@ -218,6 +259,7 @@ class TransformListener:
         if thread is not None and thread is not threading.current_thread():
             thread.join(timeout=5.0)
         self.dedicated_listener_thread = None
+        self._log_pending()
         host = self._private_node if self._private_node is not None else self.node
         for sub in (self.tf_sub, self.tf_static_sub):
             if sub is not None:

@@ -502,9 +502,11 @@ class DdsSubscription:
         self.raw = raw
         self._reader = reader
         from tf_demo.msgs import cdr
+        from tf_demo.msgs.log_throttle import PerWriterThrottle
 
         self._deserialize = cdr.deserialize
         self._decode_error = cdr.CdrError
+        self._malformed = PerWriterThrottle('malformed samples')
 
     @property
     def callback(self) -> Callable[..., Any]:
@@ -539,14 +541,15 @@ class DdsSubscription:
         take two arguments.
         """
         if not self.wants_message_info:
-            payloads = self._reader.take(_TAKE_BATCH)
             if self.raw:
-                return [(payload, None) for payload in payloads]
-            return [(m, None) for m in (self._decode(p) for p in payloads) if m is not None]
+                return [(payload, None) for payload in self._reader.take(_TAKE_BATCH)]
+            samples = self._reader.take_with_info(_TAKE_BATCH)
+            decoded = (self._decode(payload, writer) for payload, _, writer in samples)
+            return [(m, None) for m in decoded if m is not None]
         received_ns = time.time_ns()
         items: list[tuple[Any, dict[str, Any] | None]] = []
         for payload, source_ns, publication_handle in self._reader.take_with_info(_TAKE_BATCH):
-            message = payload if self.raw else self._decode(payload)
+            message = payload if self.raw else self._decode(payload, publication_handle)
             if message is None:
                 continue
             info = {
@@ -559,16 +562,20 @@ class DdsSubscription:
             items.append((message, info))
         return items
 
-    def _decode(self, payload: bytes) -> Any:
+    def _decode(self, payload: bytes, publication_handle: int) -> Any:
+        """Decode one sample; a malformed one is dropped, logged throttled per writer."""
         try:
             return self._deserialize(self.msg_type, payload)
         except (self._decode_error, ValueError) as error:
             node = self._node_ref()
             if node is not None:
-                node.get_logger().error(
+                line = self._malformed.line(
+                    self._reader.publisher_gid(publication_handle),
                     f'Dropped a malformed {self.msg_type.__msgtype__} message on '
-                    f"'{self.topic_name}': {error}"
+                    f"'{self.topic_name}': {error}",
                 )
+                if line is not None:
+                    node.get_logger().error(line)
             return None
 
     def destroy(self) -> bool:
