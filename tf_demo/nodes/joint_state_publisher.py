@@ -347,6 +347,8 @@ def _build_node_class() -> type:
 
         def _configure(self, model: RobotModel) -> None:
             self.get_logger().debug('Got description, configuring robot')
+            for warning in model.description.warnings:
+                self.get_logger().warning(warning)
             self._table = JointStateTable.from_model(
                 model,
                 zeros=self._zeros,

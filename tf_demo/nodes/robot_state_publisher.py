@@ -39,15 +39,18 @@ from collections.abc import Sequence
 from itertools import repeat
 from struct import Struct
 import sys
+import time
 from typing import Any
 
 from tf_demo.nodes import non_ros_arguments
+from tf_demo.urdf import JointPositionError
 from tf_demo.urdf import JointTransform
 from tf_demo.urdf import parse_xacro_args
 from tf_demo.urdf import RobotModel
 from tf_demo.urdf import UrdfError
 
 __all__ = [
+    'DroppedMessageLog',
     'JointStateThrottle',
     'RobotDescriptionError',
     'TfMessageEncoder',
@@ -120,23 +123,63 @@ class JointStateThrottle:
 
 
 def joint_state_problem(
-    names: Sequence[str], positions: Sequence[float]
+    names: Sequence[str],
+    positions: Sequence[float],
+    velocities: Sequence[float] = (),
+    efforts: Sequence[float] = (),
 ) -> tuple[int, str] | None:
     """
-    Return ``(logging level, upstream text)`` when a JointState must be dropped, else None.
+    Return ``(logging level, text)`` when a JointState must be dropped, else None.
 
     Upstream drops a message whose ``name`` and ``position`` lengths differ, with a warning when
-    ``position`` is empty and an error otherwise.
+    ``position`` is empty and an error otherwise (its texts). A ``velocity`` or ``effort`` that
+    is neither empty nor as long as ``name`` makes the message invalid too (a warning). Values
+    are not looked at here: see :class:`~tf_demo.urdf.JointPositionError`.
     """
-    if len(names) == len(positions):
-        return None
-    if len(positions) == 0:
-        return (
-            30,
-            'Robot state publisher ignored a JointState message about joint(s) '
-            f'"{names[0]}"(,...) whose position member was empty.',
-        )
-    return (40, 'Robot state publisher ignored an invalid JointState message')
+    if len(names) != len(positions):
+        if len(positions) == 0:
+            return (
+                30,
+                'Robot state publisher ignored a JointState message about joint(s) '
+                f'"{names[0]}"(,...) whose position member was empty.',
+            )
+        return (40, 'Robot state publisher ignored an invalid JointState message')
+    for field, values in (('velocity', velocities), ('effort', efforts)):
+        if len(values) not in {0, len(names)}:
+            return (
+                30,
+                f'Robot state publisher ignored a JointState message with {len(names)} names '
+                f'but {len(values)} {field} values',
+            )
+    return None
+
+
+class DroppedMessageLog:
+    """
+    Throttle the warnings about dropped messages, so a flood of bad input is not a log flood.
+
+    The first message of each kind is logged at once; after that at most one per
+    ``interval_s``, saying how many were dropped without a line in between.
+    """
+
+    def __init__(self, interval_s: float = 5.0) -> None:
+        self.interval_s = interval_s
+        self._last_logged: dict[str, float] = {}
+        self._unlogged: dict[str, int] = {}
+
+    def text(self, kind: str, message: str, now_s: float) -> str | None:
+        """Return the line to log now for a dropped message of ``kind``, or None to stay quiet."""
+        last = self._last_logged.get(kind)
+        if last is not None and now_s - last < self.interval_s:
+            self._unlogged[kind] = self._unlogged.get(kind, 0) + 1
+            return None
+        self._last_logged[kind] = now_s
+        unlogged = self._unlogged.pop(kind, 0)
+        if unlogged and last is not None:
+            message += (
+                f' ({unlogged} more such message(s) dropped in the last {now_s - last:.0f} s)'
+            )
+        return message
 
 
 def positions_from_joint_state(
@@ -284,6 +327,7 @@ def _build_node_class() -> type:
             self._ignore_timestamp = bool(self.declare_parameter('ignore_timestamp', False).value)
 
             self._throttle = JointStateThrottle()
+            self._dropped_log = DroppedMessageLog()
             self._encoder = TfMessageEncoder(self._frame_prefix)
             self._raw_tf = True
             self._static: dict[str, Any] = {}
@@ -330,6 +374,8 @@ def _build_node_class() -> type:
             kdl_parser_logger = get_logger('kdl_parser')
             for warning in self._model.warnings:
                 kdl_parser_logger.warning(warning)
+            for warning in self._model.description.warnings:
+                self.get_logger().warning(warning)
             self._description_pub.publish(std_msgs.String(data=xml))
             self.get_logger().info('Robot initialized')
 
@@ -386,15 +432,9 @@ def _build_node_class() -> type:
         def _on_joint_state(self, message: Any) -> None:
             names = message.name
             positions = message.position
-            problem = joint_state_problem(names, positions)
+            problem = joint_state_problem(names, positions, message.velocity, message.effort)
             if problem is not None:
-                level, text = problem
-                logger = self.get_logger()
-                # one call site per severity: rclpy's loggers refuse a severity change per site
-                if level == 30:
-                    logger.warning(text)
-                else:
-                    logger.error(text)
+                self._dropped('lengths', *problem)
                 return
             now_ns = self.get_clock().now().nanoseconds
             if self._throttle.clock_moved_backwards(now_ns):
@@ -413,9 +453,26 @@ def _build_node_class() -> type:
                 self._ignore_timestamp,
             ):
                 return
-            transforms = self._model.joint_transforms(positions_from_joint_state(names, positions))
+            try:
+                transforms = self._model.joint_transforms(
+                    positions_from_joint_state(names, positions)
+                )
+            except JointPositionError as error:
+                text = f'Robot state publisher ignored a JointState message: {error}'
+                self._dropped('non-finite', 30, text)
+                return
             self._publish_tf(transforms, stamp, sec, nanosec)
             self._throttle.record(names, stamp_ns)
+
+        def _dropped(self, kind: str, level: int, text: str) -> None:
+            """Log a dropped message, throttled per kind (one call site per severity)."""
+            line = self._dropped_log.text(f'{kind}:{level}', text, time.monotonic())
+            if line is None:
+                return
+            if level == 30:
+                self.get_logger().warning(line)
+            else:
+                self.get_logger().error(line)
 
         def _publish_tf(
             self, transforms: list[JointTransform], stamp: Any, sec: int, nanosec: int

@@ -28,10 +28,11 @@ Parameters (``--ros-args -p name:=value``):
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 import sys
 from typing import Any
 
+from tf_demo.core.files import InputFileError
+from tf_demo.core.files import read_text_file
 from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_vector3
 from tf_demo.ros.node_helpers import declare_flexible
@@ -51,6 +52,8 @@ DEFAULT_PARENT = 'base_link'
 DEFAULT_CHILD = 'camera_link'
 DEFAULT_TRANSLATION = (0.5, 0.0, 0.2)
 DEFAULT_ROTATION = (0.0, 0.0, 0.0)
+#: Lists and mappings in a transforms file nested deeper than this are refused.
+MAX_YAML_DEPTH = 32
 
 
 @dataclass(frozen=True)
@@ -85,6 +88,21 @@ def spec_from_values(
     )
 
 
+def _check_nesting(text: str, source: str) -> None:
+    """Refuse YAML nested deeper than MAX_YAML_DEPTH before PyYAML's recursive composer runs."""
+    depth = 0
+    for event in yaml.parse(text, Loader=yaml.SafeLoader):
+        if isinstance(event, yaml.CollectionStartEvent):
+            depth += 1
+            if depth > MAX_YAML_DEPTH:
+                mark = event.start_mark
+                line = f' line {mark.line + 1}' if mark is not None else ''
+                msg = f'{source}:{line} lists or mappings nested deeper than {MAX_YAML_DEPTH}'
+                raise NodeConfigError(msg)
+        elif isinstance(event, yaml.CollectionEndEvent):
+            depth -= 1
+
+
 def specs_from_yaml(text: str, source: str = '<yaml>') -> list[StaticTransformSpec]:
     """
     Parse a static-transform set: ``transforms: [{parent, child, translation, rotation}, ...]``.
@@ -94,6 +112,7 @@ def specs_from_yaml(text: str, source: str = '<yaml>') -> list[StaticTransformSp
     :raises NodeConfigError: one line naming the file, entry and field.
     """
     try:
+        _check_nesting(text, source)
         document = yaml.safe_load(text)
     except yaml.YAMLError as error:
         mark = getattr(error, 'problem_mark', None)
@@ -137,11 +156,11 @@ def specs_from_yaml(text: str, source: str = '<yaml>') -> list[StaticTransformSp
 
 
 def load_specs_file(path: str) -> list[StaticTransformSpec]:
-    """Read and parse a static-transform YAML file (see :func:`specs_from_yaml`)."""
+    """Read (bounded, regular files only) and parse a static-transform YAML file."""
     try:
-        text = Path(path).read_text(encoding='utf-8')
-    except OSError as error:
-        msg = f'transforms_file {path!r} cannot be read: {error.strerror or error}'
+        text = read_text_file(path)
+    except InputFileError as error:
+        msg = f'transforms_file {error}'
         raise NodeConfigError(msg) from None
     return specs_from_yaml(text, path)
 

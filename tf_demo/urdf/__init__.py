@@ -33,12 +33,14 @@ from tf_demo.urdf.loading import expand_xacro
 from tf_demo.urdf.loading import find_package_share
 from tf_demo.urdf.loading import parse_xacro_args
 from tf_demo.urdf.loading import read_description
+from tf_demo.urdf.model import JointPositionError
 from tf_demo.urdf.model import JointTransform
 from tf_demo.urdf.model import kdl_quaternion
 from tf_demo.urdf.model import RobotModel
 
 __all__ = [
     'JointDescription',
+    'JointPositionError',
     'JointTransform',
     'Limit',
     'Mimic',

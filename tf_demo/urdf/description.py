@@ -19,13 +19,17 @@ This module is the functional core of loading: ``parse_robot(xml, source)`` eith
 :class:`RobotDescription` whose links form one tree, or raises a :class:`UrdfError` subclass whose
 message names the source, the element and the reason. It follows urdfdom's rules (what
 robot_state_publisher accepts) and adds the checks urdfdom lacks: a link that is the child of two
-joints, cycles, zero axes, duplicate names, mimic cycles and mimics of missing joints.
+joints, cycles, zero axes, duplicate names and mimic cycles. Every number goes through one
+function that refuses what urdfdom refuses (not a decimal number, or not finite). A mimic of a
+joint that does not exist is ignored with a warning, as urdfdom and robot_state_publisher load
+such a robot.
 Malformed XML is never repaired.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from dataclasses import replace
 import math
 import re
 from typing import NoReturn
@@ -46,6 +50,14 @@ __all__ = [
 
 JOINT_TYPES = ('revolute', 'continuous', 'prismatic', 'fixed', 'floating', 'planar')
 MOVABLE_TYPES = frozenset({'revolute', 'continuous', 'prismatic'})
+_DYNAMICS = ('damping', 'friction')
+_INERTIA = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
+_SHAPE_NUMBERS: dict[str, tuple[tuple[str, int], ...]] = {
+    'sphere': (('radius', 1),),
+    'box': (('size', 3),),
+    'cylinder': (('radius', 1), ('length', 1)),
+    'mesh': (('scale', 3),),
+}
 _NUMBER = re.compile(r'[+-]?(?:\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)')
 
 Vec3 = tuple[float, float, float]
@@ -98,6 +110,8 @@ class RobotDescription:
     joints: tuple[JointDescription, ...]
     root: str
     links_with_inertia: frozenset[str] = frozenset()
+    warnings: tuple[str, ...] = ()
+    """Problems upstream also tolerates (e.g. a mimic of a missing joint), one line each."""
 
 
 class _Reader:
@@ -112,32 +126,66 @@ class _Reader:
     def number(
         self, text: str | None, element: str, attribute: str, node: etree._Element
     ) -> float:
-        """Parse one double the way urdfdom does, rejecting anything that is not a number."""
+        """
+        Parse one double as urdfdom does; the one place every number of a URDF goes through.
+
+        Anything that is not a decimal number (``inf``, ``nan``, hex, ``1_0``) is refused, and so
+        is a number too large for a double (``1e400``), as urdfdom refuses them.
+        """
         if text is None or not _NUMBER.fullmatch(text.strip()):
             self.malformed(element, f'attribute {attribute}="{text}" is not a number', node)
-        return float(text.strip())
+        value = float(text.strip())
+        if not math.isfinite(value):
+            self.malformed(
+                element,
+                f'attribute {attribute}="{text}" is out of range (not a finite double)',
+                node,
+            )
+        return value
 
     def optional_number(
         self, node: etree._Element, attribute: str, element: str, default: float | None
     ) -> float | None:
+        """Parse ``attribute`` of ``node`` when present, else return ``default``."""
         text = node.get(attribute)
         if text is None:
             return default
         return self.number(text, element, attribute, node)
 
-    def vector(self, node: etree._Element, attribute: str, element: str, default: Vec3) -> Vec3:
-        """Parse ``"x y z"``: exactly three space-separated numbers."""
+    def numbers(
+        self, node: etree._Element, attribute: str, element: str, count: int
+    ) -> tuple[float, ...] | None:
+        """Parse ``"a b c"``: exactly ``count`` space-separated numbers (None when absent)."""
         text = node.get(attribute)
         if text is None:
-            return default
+            return None
         pieces = text.split()
-        if len(pieces) != 3 or not all(_NUMBER.fullmatch(p) for p in pieces):
+        if len(pieces) != count or not all(_NUMBER.fullmatch(p) for p in pieces):
+            words = {3: 'three', 4: 'four'}.get(count, str(count))
             self.malformed(
                 element,
-                f'attribute {attribute}="{text}" is not three numbers separated by spaces',
+                f'attribute {attribute}="{text}" is not {words} numbers separated by spaces',
                 node,
             )
-        return (float(pieces[0]), float(pieces[1]), float(pieces[2]))
+        return tuple(self.number(piece, element, attribute, node) for piece in pieces)
+
+    def vector(self, node: etree._Element, attribute: str, element: str, default: Vec3) -> Vec3:
+        """Parse ``"x y z"``: exactly three space-separated finite numbers."""
+        values = self.numbers(node, attribute, element, 3)
+        if values is None:
+            return default
+        return (values[0], values[1], values[2])
+
+    def origin(self, parent: etree._Element, element: str) -> tuple[Vec3, Vec3]:
+        """Parse the first ``<origin xyz rpy>`` of ``parent`` (zeros when absent)."""
+        zero: Vec3 = (0.0, 0.0, 0.0)
+        node = parent.find('origin')
+        if node is None:
+            return zero, zero
+        return (
+            self.vector(node, 'xyz', f'{element} <origin>', zero),
+            self.vector(node, 'rpy', f'{element} <origin>', zero),
+        )
 
 
 def _line(node: etree._Element | None) -> int | None:
@@ -186,12 +234,7 @@ def _parse_joint(reader: _Reader, node: etree._Element) -> JointDescription:
             )
         links[role] = role_nodes[0].get('link', '')
 
-    xyz: Vec3 = (0.0, 0.0, 0.0)
-    rpy: Vec3 = (0.0, 0.0, 0.0)
-    origin = node.find('origin')
-    if origin is not None:
-        xyz = reader.vector(origin, 'xyz', f'{element} <origin>', xyz)
-        rpy = reader.vector(origin, 'rpy', f'{element} <origin>', rpy)
+    xyz, rpy = reader.origin(node, element)
 
     axis: Vec3 = (1.0, 0.0, 0.0)
     axis_node = node.find('axis')
@@ -249,6 +292,12 @@ def _parse_joint(reader: _Reader, node: etree._Element) -> JointDescription:
         safety_element = f'{element} <safety_controller>'
         soft_lower = reader.optional_number(safety, 'soft_lower_limit', safety_element, None)
         soft_upper = reader.optional_number(safety, 'soft_upper_limit', safety_element, None)
+        reader.optional_number(safety, 'k_position', safety_element, None)
+        reader.optional_number(safety, 'k_velocity', safety_element, None)
+    for tag, attributes in (('calibration', ('rising', 'falling')), ('dynamics', _DYNAMICS)):
+        extra = node.find(tag)
+        for attribute in attributes if extra is not None else ():
+            reader.optional_number(extra, attribute, f'{element} <{tag}>', None)
 
     return JointDescription(
         name=name,
@@ -264,6 +313,37 @@ def _parse_joint(reader: _Reader, node: etree._Element) -> JointDescription:
         soft_upper=soft_upper,
         line=_line(node),
     )
+
+
+def _check_link_numbers(reader: _Reader, node: etree._Element, name: str) -> None:
+    """Check the numbers urdfdom reads in a link: inertial, visual and collision elements."""
+    element = f"link '{name}'"
+    inertial = node.find('inertial')
+    if inertial is not None:
+        where = f'{element} <inertial>'
+        reader.origin(inertial, where)
+        for tag, attributes in (('mass', ('value',)), ('inertia', _INERTIA)):
+            part = inertial.find(tag)
+            for attribute in attributes if part is not None else ():
+                reader.optional_number(part, attribute, f'{where} <{tag}>', None)
+    for tag in ('visual', 'collision'):
+        for part in node.iterchildren(tag):
+            where = f'{element} <{tag}>'
+            reader.origin(part, where)
+            geometry = part.find('geometry')
+            shape = (
+                next((c for c in geometry if isinstance(c.tag, str)), None)
+                if (geometry is not None)
+                else None
+            )
+            if shape is None:
+                continue
+            for attribute, count in _SHAPE_NUMBERS.get(shape.tag, ()):
+                shape_element = f'{where} <{shape.tag}>'
+                if count == 1:
+                    reader.optional_number(shape, attribute, shape_element, None)
+                else:
+                    reader.numbers(shape, attribute, shape_element, count)
 
 
 def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
@@ -309,6 +389,7 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
                 node,
             )
         link_lines[link_name] = _line(node)
+        _check_link_numbers(reader, node, link_name)
         if node.find('inertial') is not None:
             inertial_links.add(link_name)
         links.append(link_name)
@@ -380,9 +461,16 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
             _line(root),
         )
     _check_reachable(source, roots[0], links, parent_joint)
-    _check_mimics(source, joints, joint_lines)
+    joints, warnings = _resolve_mimics(source, joints)
+    _check_mimics(source, joints)
     return RobotDescription(
-        robot_name, source, tuple(links), tuple(joints), roots[0], frozenset(inertial_links)
+        robot_name,
+        source,
+        tuple(links),
+        tuple(joints),
+        roots[0],
+        frozenset(inertial_links),
+        tuple(warnings),
     )
 
 
@@ -430,32 +518,51 @@ def _check_reachable(
             )
 
 
-def _check_mimics(
-    source: str, joints: list[JointDescription], joint_lines: dict[str, int | None]
-) -> None:
-    by_name = {joint.name: joint for joint in joints}
+def _resolve_mimics(
+    source: str, joints: list[JointDescription]
+) -> tuple[list[JointDescription], list[str]]:
+    """
+    Drop each ``<mimic>`` of a joint that does not exist, with a warning naming both joints.
+
+    urdfdom and robot_state_publisher load such a robot and ignore the mimic; the joint is then
+    an ordinary joint.
+    """
+    names = {joint.name for joint in joints}
+    warnings: list[str] = []
+    resolved: list[JointDescription] = []
     for joint in joints:
-        if joint.mimic is None:
-            continue
-        if joint.mimic.joint not in by_name:
-            raise UrdfBrokenRefError(
-                source,
-                f"joint '{joint.name}' <mimic>",
-                f"joint '{joint.name}' mimics joint '{joint.mimic.joint}', which does not exist",
-                joint.line,
+        if joint.mimic is not None and joint.mimic.joint not in names:
+            location = source if joint.line is None else f'{source}:{joint.line}'
+            warnings.append(
+                f"{location}: joint '{joint.name}' <mimic>: joint '{joint.name}' mimics joint "
+                f"'{joint.mimic.joint}', which does not exist; the <mimic> is ignored and "
+                f"'{joint.name}' is an ordinary joint"
             )
-        chain = [joint.name]
-        current = by_name[joint.mimic.joint]
-        while True:
-            if current.name in chain:
-                cycle = [*chain[chain.index(current.name) :], current.name]
+            resolved.append(replace(joint, mimic=None))
+        else:
+            resolved.append(joint)
+    return resolved, warnings
+
+
+def _check_mimics(source: str, joints: list[JointDescription]) -> None:
+    """Refuse mimic cycles; each joint is visited once (every mimic names an existing joint)."""
+    by_name = {joint.name: joint for joint in joints}
+    done: set[str] = set()
+    for joint in joints:
+        path: list[str] = []
+        on_path: set[str] = set()
+        current: JointDescription | None = joint
+        while current is not None and current.name not in done:
+            if current.name in on_path:
+                cycle = [*path[path.index(current.name) :], current.name]
+                first = by_name[cycle[0]]
                 raise UrdfMalformedError(
                     source,
-                    f"joint '{joint.name}' <mimic>",
+                    f"joint '{first.name}' <mimic>",
                     f'mimic joints form a cycle: {" -> ".join(cycle)}',
-                    joint_lines[joint.name],
+                    first.line,
                 )
-            chain.append(current.name)
-            if current.mimic is None or current.mimic.joint not in by_name:
-                break
-            current = by_name[current.mimic.joint]
+            path.append(current.name)
+            on_path.add(current.name)
+            current = None if current.mimic is None else by_name[current.mimic.joint]
+        done.update(path)

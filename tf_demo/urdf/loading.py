@@ -19,27 +19,36 @@ xacro's ``$(find pkg)`` normally needs ``ament_index_python``; here a package is
 directories of ``package_paths`` (or ``TF_DEMO_PACKAGE_PATH``, ``os.pathsep``-separated), each
 holding ``<pkg>/`` folders, and then as ``<prefix>/share/<pkg>`` for every prefix of
 ``AMENT_PREFIX_PATH`` (the ament index layout). ``package://pkg/rel`` in ``xacro:include`` resolves
-the same way. xacro keeps module-global state, so expansion is serialised with a lock.
+the same way. Files are read through :mod:`tf_demo.core.files` (bounded, regular files only), and a
+xacro expansion runs in a child process with time, memory and nesting limits (xacro is code).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from collections.abc import Iterator
 from collections.abc import Mapping
 from collections.abc import Sequence
 import contextlib
+import json
 import os
 from pathlib import Path
-import threading
-from xml.parsers.expat import ExpatError
+import signal
+import subprocess
+import sys
+import tempfile
+from typing import IO
 
+from tf_demo.core.files import InputFileError
+from tf_demo.core.files import MAX_TEXT_FILE_BYTES
+from tf_demo.core.files import read_text_file
 from tf_demo.urdf.errors import UrdfBrokenRefError
 from tf_demo.urdf.errors import UrdfError
 from tf_demo.urdf.errors import UrdfMalformedError
+from tf_demo.urdf.errors import UrdfUnsupportedError
 
 __all__ = [
     'PACKAGE_PATH_VARIABLE',
+    'XACRO_TIMEOUT_S',
+    'PackageNotFoundError',
     'expand_xacro',
     'find_package_share',
     'is_xacro_path',
@@ -48,7 +57,8 @@ __all__ = [
 ]
 
 PACKAGE_PATH_VARIABLE = 'TF_DEMO_PACKAGE_PATH'
-_XACRO_LOCK = threading.Lock()
+#: The longest a xacro expansion may take before it is stopped.
+XACRO_TIMEOUT_S = 30.0
 
 
 class PackageNotFoundError(LookupError):
@@ -109,80 +119,131 @@ def parse_xacro_args(text: str) -> dict[str, str]:
     return mappings
 
 
-@contextlib.contextmanager
-def _patched_xacro(package_paths: Sequence[str | Path] | None) -> Iterator[None]:
-    import xacro
-    from xacro import substitution_args
+_WORKER_BOOTSTRAP = (
+    'import json, sys\n'
+    'request = json.loads(sys.stdin.buffer.read(1 << 20))\n'
+    "sys.path[:0] = request['sys_path']\n"
+    'from tf_demo.urdf.xacro_worker import child_main\n'
+    'child_main(request)\n'
+)
+_STDERR_TAIL_BYTES = 64 * 1024
+_ERROR_CLASSES: dict[str, type[UrdfError]] = {
+    cls.__name__: cls
+    for cls in (UrdfError, UrdfMalformedError, UrdfBrokenRefError, UrdfUnsupportedError)
+}
 
-    def find(package: str) -> str:
-        return str(find_package_share(package, package_paths))
 
-    original_abs: Callable[[str], str] = xacro.abs_filename_spec
+def _kill_group(process: subprocess.Popen[bytes]) -> None:
+    """Kill the child and anything it started (its own session), then reap it."""
+    if process.poll() is None:
+        with contextlib.suppress(OSError):
+            os.killpg(process.pid, signal.SIGKILL)
+        with contextlib.suppress(OSError):
+            process.kill()
+    process.wait()
 
-    def abs_filename(filename_spec: str) -> str:
-        if filename_spec.startswith('package://'):
-            package, _, relative = filename_spec[len('package://') :].partition('/')
-            return str(find_package_share(package, package_paths) / relative)
-        return original_abs(filename_spec)
 
-    original_find = substitution_args._eval_find
-    original_dict_find = substitution_args._eval_dict['find']
-    with _XACRO_LOCK:
-        xacro.abs_filename_spec = abs_filename
-        substitution_args._eval_find = find
-        substitution_args._eval_dict['find'] = find
-        try:
-            yield
-        finally:
-            xacro.abs_filename_spec = original_abs
-            substitution_args._eval_find = original_find
-            substitution_args._eval_dict['find'] = original_dict_find
+def _tail(handle: IO[bytes], limit: int) -> str:
+    size = handle.seek(0, os.SEEK_END)
+    handle.seek(max(0, size - limit))
+    return handle.read().decode('utf-8', 'replace')
 
 
 def expand_xacro(
     path: str | Path,
     mappings: Mapping[str, str] | None = None,
     package_paths: Sequence[str | Path] | None = None,
+    *,
+    timeout_s: float = XACRO_TIMEOUT_S,
 ) -> str:
     """
     Expand a xacro file to URDF text, as ``xacro file name:=value`` does.
 
+    xacro evaluates Python expressions, so the expansion runs in a child process with a time
+    limit (killed when it runs out), a memory limit, bounded file reads and a limit on macro and
+    include nesting (:mod:`tf_demo.urdf.xacro_worker`). It is not a sandbox: expand only files
+    you trust, as with upstream xacro.
+
     :param path: the ``.xacro`` file.
     :param mappings: xacro arguments (values are converted to ``str``).
     :param package_paths: where ``$(find pkg)`` and ``package://pkg`` look first.
-    :raises UrdfError: naming the file and what xacro reported.
+    :param timeout_s: the longest the expansion may take.
+    :raises UrdfError: naming the file and what xacro reported, or that time ran out.
     """
     source = str(path)
-    if not Path(path).is_file():
-        raise UrdfBrokenRefError(source, 'file', 'no such file')
-    import xacro
+    request = {
+        'path': source,
+        'mappings': {str(k): str(v) for k, v in (mappings or {}).items()},
+        'package_paths': [str(p) for p in package_paths or ()],
+        'sys_path': [p for p in sys.path if isinstance(p, str)],
+        'timeout_s': timeout_s,
+    }
+    python = sys.executable or 'python3'
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        process = subprocess.Popen(  # our own interpreter and bootstrap
+            [python, '-c', _WORKER_BOOTSTRAP],
+            stdin=subprocess.PIPE,
+            stdout=out,
+            stderr=err,
+            start_new_session=True,  # killed as a group; a terminal's Ctrl-C is the parent's
+        )
+        try:
+            try:
+                if process.stdin is not None:
+                    process.stdin.write(json.dumps(request).encode('utf-8'))
+                    process.stdin.close()
+            except BrokenPipeError:
+                pass  # the child died at once; its exit status tells why below
+            try:
+                returncode = process.wait(timeout=timeout_s)
+            except subprocess.TimeoutExpired:
+                msg = (
+                    f'expansion did not finish within {timeout_s:g} s and was stopped (xacro '
+                    'evaluates expressions: an endless macro or a huge number such as '
+                    '${9**9**9}?)'
+                )
+                raise UrdfMalformedError(source, 'xacro', msg) from None
+        finally:
+            _kill_group(process)
+        size = out.seek(0, os.SEEK_END)
+        answer: object = None
+        if 0 < size <= 4 * MAX_TEXT_FILE_BYTES:
+            out.seek(0)
+            with contextlib.suppress(ValueError):
+                answer = json.loads(out.read().decode('utf-8'))
+        stderr = _tail(err, _STDERR_TAIL_BYTES)
+    return _answer_to_text(source, answer, returncode, stderr)
 
-    arguments = {str(k): str(v) for k, v in (mappings or {}).items()}
-    try:
-        with _patched_xacro(package_paths):
-            document = xacro.process_file(source, mappings=arguments)
-    except PackageNotFoundError as error:
-        raise UrdfBrokenRefError(source, 'xacro', str(error)) from None
-    except ExpatError as error:
-        raise UrdfMalformedError(
-            source, 'XML', f'malformed XML: {error}', getattr(error, 'lineno', None)
-        ) from None
-    except (xacro.XacroException, OSError, KeyError, ValueError, NameError) as error:
-        reason = str(error) or type(error).__name__
-        cause = getattr(error, 'exc', None)
-        if isinstance(cause, PackageNotFoundError):
-            raise UrdfBrokenRefError(source, 'xacro', str(cause)) from None
-        if isinstance(cause, OSError) and cause.filename:
-            raise UrdfBrokenRefError(
-                source, 'xacro', f'{cause.strerror}: {cause.filename}'
-            ) from None
-        if isinstance(error, OSError) and error.filename:
-            raise UrdfBrokenRefError(
-                source, 'xacro', f'{error.strerror}: {error.filename}'
-            ) from None
-        raise UrdfMalformedError(source, 'xacro', f'xacro failed: {reason}') from None
-    text: str = document.toprettyxml(indent='  ')
-    return text
+
+def _answer_to_text(source: str, answer: object, returncode: int, stderr: str) -> str:
+    """Return the child's URDF text, or raise the UrdfError it reported (or its death)."""
+    if isinstance(answer, dict) and isinstance(answer.get('xml'), str):
+        if stderr.strip():
+            sys.stderr.write(stderr if stderr.endswith('\n') else stderr + '\n')
+        text: str = answer['xml']
+        return text
+    error = answer.get('error') if isinstance(answer, dict) else None
+    if isinstance(error, dict):
+        cls = _ERROR_CLASSES.get(str(error.get('kind')), UrdfMalformedError)
+        line = error.get('line')
+        raise cls(
+            str(error.get('source', source)),
+            str(error.get('element', 'xacro')),
+            str(error.get('reason', '')),
+            line if isinstance(line, int) else None,
+        )
+    if returncode < 0:
+        try:
+            name = signal.Signals(-returncode).name
+        except ValueError:
+            name = f'signal {-returncode}'
+        reason = f'the expansion was killed by {name} (out of memory, CPU time or output size?)'
+    else:
+        last = [line for line in stderr.splitlines() if line.strip()]
+        reason = f'the expansion failed (exit code {returncode})' + (
+            f': {last[-1].strip()}' if last else ''
+        )
+    raise UrdfMalformedError(source, 'xacro', reason)
 
 
 def read_description(
@@ -190,12 +251,23 @@ def read_description(
     mappings: Mapping[str, str] | None = None,
     package_paths: Sequence[str | Path] | None = None,
 ) -> str:
-    """Read a URDF file, or expand a ``.xacro`` file; return the URDF text."""
+    """Read a URDF file (bounded, regular files only), or expand a ``.xacro`` file."""
     if is_xacro_path(path):
         return expand_xacro(path, mappings, package_paths)
     try:
-        return Path(path).read_text(encoding='utf-8')
-    except FileNotFoundError:
-        raise UrdfBrokenRefError(str(path), 'file', 'no such file') from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise UrdfError(str(path), 'file', f'cannot read: {error}') from None
+        return read_text_file(path)
+    except InputFileError as error:
+        raise _file_error(str(path), error) from None
+
+
+def _file_error(source: str, error: InputFileError) -> UrdfError:
+    """Turn the bounded reader's error (``<path>[:line]: reason``) into a UrdfError."""
+    text = str(error)
+    rest = text[len(source) :] if text.startswith(source) else f': {text}'
+    line_text, _, reason = rest.lstrip(':').partition(': ')
+    line = int(line_text) if line_text.isdigit() else None
+    if line is None:
+        reason = rest.lstrip(':').strip()
+    if reason == 'no such file':
+        return UrdfBrokenRefError(source, 'file', reason, line)
+    return UrdfError(source, 'file', reason, line)

@@ -41,7 +41,7 @@ from tf_demo.urdf.description import parse_robot
 from tf_demo.urdf.description import RobotDescription
 from tf_demo.urdf.loading import read_description
 
-__all__ = ['JointTransform', 'RobotModel']
+__all__ = ['JointPositionError', 'JointTransform', 'RobotModel']
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
@@ -109,6 +109,16 @@ def _moving_joint(joint: JointDescription) -> _MovingJoint:
         d,
         kdl_quaternion(qx, qy, qz, qw),
     )
+
+
+class JointPositionError(ValueError):
+    """A joint position that is not a finite number: given, or computed for a mimic joint."""
+
+    def __init__(self, joint: str, position: float, computed: bool = False) -> None:
+        self.joint = joint
+        self.position = position
+        how = ' (computed from the joint it mimics)' if computed else ''
+        super().__init__(f"joint '{joint}': position {position!r}{how} is not a finite number")
 
 
 class RobotModel:
@@ -239,6 +249,7 @@ class RobotModel:
 
         :param positions: joint name -> position (rad or m); unknown, fixed and floating names are
             ignored, mimic joints are filled in from their sources.
+        :raises JointPositionError: when a used position (or a mimic's result) is inf or nan.
         """
         values = self.resolve_positions(positions) if self._mimics else positions
         transforms: list[JointTransform] = []
@@ -265,6 +276,8 @@ class RobotModel:
             position = values.get(name)
             if position is None:
                 continue
+            if position - position != 0.0:  # inf or nan (math.sin(inf) raises ValueError)
+                raise JointPositionError(name, position, name not in positions)
             if not revolute:
                 append(
                     (
@@ -294,22 +307,23 @@ class RobotModel:
         for parent, child, t, q in self.static_transforms() + self.joint_transforms(positions):
             edges[child] = (parent, t, q)
         poses: dict[str, tuple[Vec3, Quat]] = {self.root: ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))}
-
-        def pose(link: str) -> tuple[Vec3, Quat] | None:
-            if link in poses:
-                return poses[link]
-            edge = edges.get(link)
-            if edge is None:
-                return None
-            parent_pose = pose(edge[0])
-            if parent_pose is None:
-                return None
-            t, q = compose(parent_pose[0], parent_pose[1], edge[1], edge[2])
-            poses[link] = ((t[0], t[1], t[2]), (q[0], q[1], q[2], q[3]))
-            return poses[link]
-
+        unreachable: set[str] = set()
         for link in self.description.links:
-            pose(link)
+            # walk up to a link whose pose is known (or cannot be), then compose downwards
+            chain: list[str] = []
+            current = link
+            while current not in poses and current not in unreachable and current in edges:
+                chain.append(current)
+                current = edges[current][0]
+            if current not in poses:
+                unreachable.update(chain)
+                unreachable.add(current)
+                continue
+            for child in reversed(chain):
+                parent, translation, rotation = edges[child]
+                parent_pose = poses[parent]
+                t, q = compose(parent_pose[0], parent_pose[1], translation, rotation)
+                poses[child] = ((t[0], t[1], t[2]), (q[0], q[1], q[2], q[3]))
         return poses
 
 
@@ -320,16 +334,14 @@ def _mimics_in_dependency_order(
     by_name = {joint.name: joint for joint in joints}
     ordered: list[tuple[str, str, float, float]] = []
     placed: set[str] = set()
-
-    def place(joint: JointDescription) -> None:
-        if joint.name in placed or joint.mimic is None:
-            return
-        source = by_name.get(joint.mimic.joint)
-        if source is not None:
-            place(source)
-        placed.add(joint.name)
-        ordered.append((joint.name, joint.mimic.joint, joint.mimic.multiplier, joint.mimic.offset))
-
     for joint in sorted(joints, key=lambda j: j.name):
-        place(joint)
+        # walk up to the first source already placed (or not a mimic), then place downwards
+        chain: list[tuple[str, str, float, float]] = []
+        current: JointDescription | None = joint
+        while current is not None and current.mimic is not None and current.name not in placed:
+            mimic = current.mimic
+            chain.append((current.name, mimic.joint, mimic.multiplier, mimic.offset))
+            placed.add(current.name)  # parse_robot refuses mimic cycles: no joint comes twice
+            current = by_name.get(mimic.joint)
+        ordered.extend(reversed(chain))
     return ordered
