@@ -245,7 +245,7 @@ def test_param_rules_give_the_real_rcls_values(rule: list[str], ros: None) -> No
         (['-p'], "Couldn't parse trailing -p flag. No parameter override rule found."),
         (['--param', 'x'], "Couldn't parse parameter override rule: '--param x'. Error: "),
         (['-p', 'x:=[1, a]'], 'Sequence should be of same type'),
-        (['-p', 'x:={a: 1}'], 'unsupported value'),
+        (['-p', 'x:={a: 1}'], 'a mapping is not a parameter value'),
         (['-p', 'bad name:=1'], "Invalid parameter name 'bad name'"),
         (['-r'], "Couldn't parse trailing -r flag. No remap rule found."),
         (['-r', 'a'], "Couldn't parse remap rule: '-r a'. Error: "),
@@ -253,7 +253,7 @@ def test_param_rules_give_the_real_rcls_values(rule: list[str], ros: None) -> No
         (['-r', '__node:=a/b'], "Invalid node name 'a/b'"),
         (['-r', 'a:=b//c'], "must not contain repeated '/'"),
         (['--params-file'], "Couldn't parse trailing --params-file flag. No file path provided."),
-        (['--params-file', '/nonexistent/p.yaml'], 'Error opening YAML file'),
+        (['--params-file', '/nonexistent/p.yaml'], '/nonexistent/p.yaml: no such file'),
         (['--log-level'], "Couldn't parse trailing log level flag: '--log-level'."),
         (
             ['--log-level', 'loud'],
@@ -277,8 +277,8 @@ def test_malformed_params_file_names_the_problem(tmp_path: Path) -> None:
     params.write_text('talker:\n  rate: 1.0\n', encoding='utf-8')
     with pytest.raises(RosArgsError, match="'talker/rate' is not a node name"):
         parse_ros_args(['--ros-args', '--params-file', str(params)])
-    params.write_text('talker: [\n', encoding='utf-8')
-    with pytest.raises(RosArgsError, match='Error parsing YAML file at line'):
+    params.write_text('talker:\n  ros__parameters:\n    x: [1\n', encoding='utf-8')
+    with pytest.raises(RosArgsError, match=r'bad\.yaml:4: invalid YAML \(column 1\)'):
         parse_ros_args(['--ros-args', '--params-file', str(params)])
 
 

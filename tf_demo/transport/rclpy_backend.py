@@ -32,6 +32,7 @@ import rclpy.clock
 import rclpy.duration
 import rclpy.exceptions
 import rclpy.executors
+import rclpy.impl.implementation_singleton
 import rclpy.logging
 import rclpy.node
 import rclpy.parameter
@@ -40,7 +41,6 @@ import rclpy.time
 import rclpy.time_source
 import rclpy.utilities
 
-init = rclpy.init
 shutdown = rclpy.shutdown
 try_shutdown = rclpy.utilities.try_shutdown
 ok = rclpy.utilities.ok
@@ -54,6 +54,33 @@ MultiThreadedExecutor = rclpy.executors.MultiThreadedExecutor
 ExternalShutdownException = rclpy.executors.ExternalShutdownException
 spin_until_future_complete = rclpy.spin_until_future_complete
 remove_ros_args = rclpy.utilities.remove_ros_args
+_rclpy_impl = rclpy.impl.implementation_singleton.rclpy_implementation
+
+
+def init(*, args: list[str] | None = None, **kwargs: Any) -> None:
+    """
+    Run ``rclpy.init``; rcl's verdict on the ``--ros-args`` is the one that counts.
+
+    rcl parses the arguments here (once). Its refusal becomes a :class:`RosArgsError` with
+    rcl's text on one line, shortened and with advice (``explain_rcl_error``), so ``run_node``
+    reports it as it reports any bad argument; other failures are rclpy's own.
+    """
+    # Imported here: ros_args imports logging, which imports this module.
+    from tf_demo.transport.ros_args import explain_rcl_error
+    from tf_demo.transport.ros_args import RosArgsError
+
+    try:
+        rclpy.init(args=args, **kwargs)
+    except _rclpy_impl.UnknownROSArgsError as error:
+        msg = f'Found unknown ROS arguments: {error}'
+        raise RosArgsError(msg) from None
+    except _rclpy_impl.RCLError as error:
+        text = str(error)
+        if "Couldn't parse" not in text:
+            raise
+        raise RosArgsError(explain_rcl_error(text, args or [])) from None
+
+
 CallbackGroup = rclpy.callback_groups.CallbackGroup
 MutuallyExclusiveCallbackGroup = rclpy.callback_groups.MutuallyExclusiveCallbackGroup
 ReentrantCallbackGroup = rclpy.callback_groups.ReentrantCallbackGroup

@@ -38,10 +38,16 @@ from collections.abc import Iterator
 from collections.abc import Sequence
 from dataclasses import dataclass
 from dataclasses import field
+import decimal
+import itertools
+import math
 import re
+import sys
 import threading
 from typing import Any
 
+from tf_demo.core.files import InputFileError
+from tf_demo.core.files import read_text_file
 from tf_demo.transport.logging import LoggingSeverity
 from tf_demo.transport.parameters import Parameter
 import yaml
@@ -56,6 +62,7 @@ __all__ = [
     'RosArgs',
     'RosArgsError',
     'expand_topic_name',
+    'explain_rcl_error',
     'global_ros_args',
     'parse_param_value',
     'parse_ros_args',
@@ -323,7 +330,8 @@ def _wrap(flag: str, value: str, what: str, parse: Any) -> Any:
     try:
         return parse(value)
     except _RuleError as error:
-        msg = f"Couldn't parse {what}: '{flag} {value}'. Error: {error}"
+        shown = value if len(value) <= 200 and '\n' not in value else _shorten(value)
+        msg = f"Couldn't parse {what}: '{flag} {shown}'. Error: {error}"
         raise RosArgsError(msg) from None
 
 
@@ -331,90 +339,406 @@ class _RuleError(ValueError):
     """Why one rule is malformed (wrapped into a RosArgsError)."""
 
 
-# libyaml, as rcl uses, where PyYAML has it: its scanner accepts what rcl accepts (e.g. a tab
-# inside a multi-line value such as a URDF given with -p robot_description:=...).
-_SafeLoaderBase: type[yaml.SafeLoader] = getattr(yaml, 'CSafeLoader', yaml.SafeLoader)
+# ---------------------------------------------------------------------------------------------
+# YAML values typed as rcl_yaml_param_parser types them (rcl's parse.c: get_value, parse_value,
+# parse_value_events, parse_file_events). Values are read from the YAML event stream, as rcl
+# reads them: nothing is constructed, so an alias is never expanded and nesting never recurses.
+
+#: The deepest nesting of YAML collections a ``-p`` value or a params file may have. rcl has no
+#: limit of its own; real params files nest a handful of levels.
+MAX_YAML_NESTING = 64
+
+#: Whether PyYAML has libyaml, the scanner rcl parses with (``yaml.CSafeLoader``).
+LIBYAML_AVAILABLE = hasattr(yaml, 'CSafeLoader')
+
+_INT64_MIN = -(2**63)
+_INT64_MAX = 2**63 - 1
+_STR_TAG = 'tag:yaml.org,2002:str'
+_QUOTED_STYLES = frozenset({"'", '"'})
+_BREAKS = '\r\n\x85\u2028\u2029'
+_RCL_TRUE = frozenset({'Y', 'y', 'yes', 'Yes', 'YES', 'true', 'True', 'TRUE', 'on', 'On', 'ON'})
+_RCL_FALSE = frozenset({'N', 'n', 'no', 'No', 'NO', 'false', 'False', 'FALSE', 'off', 'Off'})
+_RCL_FALSE |= {'OFF'}
+_RCL_SPECIAL_DOUBLES = {
+    f'{sign}.{word}': value
+    for word, value in (('inf', math.inf), ('Inf', math.inf), ('INF', math.inf))
+    for sign in ('', '+')
+} | {f'-.{word}': -math.inf for word in ('inf', 'Inf', 'INF')}
+_RCL_SPECIAL_DOUBLES |= {f'.{word}': math.nan for word in ('nan', 'NaN', 'NAN')}
+# C's strtoll (base 0) and strtod, whole-string forms; no ambiguous repetition, so linear time.
+_C_SPACE = r'[ \t\n\v\f\r]*'
+_C_INT = re.compile(rf'{_C_SPACE}([+-]?)(?:0[xX]([0-9a-fA-F]+)|0([0-7]*)|([1-9][0-9]*))')
+_C_DOUBLE = re.compile(
+    rf"""{_C_SPACE}(?P<sign>[+-]?)(?:
+        (?P<hex>0[xX](?=\.?[0-9a-fA-F])[0-9a-fA-F]*(?:\.[0-9a-fA-F]*)?(?:[pP][+-]?[0-9]+)?)
+      | (?P<dec>(?=\.?[0-9])[0-9]*(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?)
+      | (?P<inf>(?i:inf(?:inity)?))
+      | (?P<nan>(?i:nan)(?:\([0-9A-Za-z_]*\))?)
+    )""",
+    re.VERBOSE,
+)
+# Digits beyond which an int64 has certainly overflowed (leading zeros stripped).
+_INT64_DIGITS = {16: 16, 8: 22, 10: 19}
 
 
-class _YamlLoader(_SafeLoaderBase):  # type: ignore[valid-type,misc]
-    """YAML 1.1 scalars as rcl's parser types them, without dates (they stay strings)."""
+def _c_strtoll(text: str) -> int | None:
+    """Return ``strtoll(text, &end, 0)`` when it reads all of ``text`` in int64, else None."""
+    match = _C_INT.fullmatch(text)
+    if match is None:
+        return None
+    sign, hex_digits, octal_digits, decimal_digits = match.groups()
+    base, digits = (
+        (16, hex_digits)
+        if hex_digits is not None
+        else (8, octal_digits)
+        if octal_digits is not None
+        else (10, decimal_digits)
+    )
+    digits = digits.lstrip('0')
+    if len(digits) > _INT64_DIGITS[base]:
+        return None  # ERANGE: rcl then tries the text as a double
+    magnitude = int(digits, base) if digits else 0
+    value = -magnitude if sign == '-' else magnitude
+    return value if _INT64_MIN <= value <= _INT64_MAX else None
 
 
-_YamlLoader.yaml_implicit_resolvers = {
-    key: [(tag, regexp) for tag, regexp in resolvers if tag != 'tag:yaml.org,2002:timestamp']
-    for key, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
-}
+def _c_strtod(text: str) -> float | None:
+    """Return ``strtod(text, &end)`` when it reads all of ``text`` without ERANGE, else None."""
+    match = _C_DOUBLE.fullmatch(text)
+    if match is None:
+        return None
+    value: float | None
+    if match['inf'] is not None:
+        value = math.inf
+    elif match['nan'] is not None:
+        value = math.nan
+    elif match['hex'] is not None:
+        value = _hex_double(match['hex'][2:])
+    else:
+        value = _decimal_double(match['dec'])
+    if value is None:
+        return None
+    return -value if match['sign'] == '-' else value
 
 
-def _ignore_tag(loader: _YamlLoader, _suffix: str, node: yaml.Node) -> Any:
+def _decimal_double(body: str) -> float | None:
+    """Read a decimal ``strtod`` body; None where glibc sets ERANGE (overflow, inexact tiny)."""
+    value = float(body)
+    if math.isinf(value):
+        return None
+    mantissa = body.partition('e')[0].partition('E')[0]
+    if value == 0.0:
+        return None if mantissa.strip('0.') else 0.0
+    if value < sys.float_info.min:  # subnormal: glibc reports ERANGE unless it is exact
+        try:
+            exact = decimal.Decimal(body) == decimal.Decimal(value)
+        except (decimal.DecimalException, ValueError):
+            return None
+        return value if exact else None
+    return value
+
+
+def _hex_double(body: str) -> float | None:
+    """Read a hexadecimal ``strtod`` body (after ``0x``); None where glibc sets ERANGE."""
+    mantissa_text, _, exponent_text = body.lower().partition('p')
+    whole, _, fraction = mantissa_text.partition('.')
+    mantissa = int((whole + fraction).lstrip('0') or '0', 16)
+    if mantissa == 0:
+        return 0.0
+    if len(exponent_text.lstrip('+-').lstrip('0')) > 6:
+        return None  # an exponent beyond a million overflows or underflows
+    lowest = int(exponent_text or '0') - 4 * len(fraction)  # the exponent of mantissa's bit 0
+    trailing_zeros = (mantissa & -mantissa).bit_length() - 1
+    top = lowest + mantissa.bit_length() - 1
+    if top >= 1024 or top < -1075:
+        return None
+    try:
+        value = float.fromhex(f'{whole or "0"}.{fraction}p{int(exponent_text or "0")}')
+    except OverflowError:
+        return None
+    if value < sys.float_info.min and lowest + trailing_zeros < -1074:
+        return None  # an inexact subnormal
+    return value
+
+
+def rcl_scalar(
+    text: str, *, quoted: bool = False, str_tag: bool = False
+) -> bool | int | float | str:
     """
-    Read a node whose tag the safe loader does not know as if it had no tag, as rcl does.
+    Type one YAML scalar as rcl does: ``!!str`` or quoted stays a string; else bool, int, double.
 
-    rcl's parser ignores tags but ``!!str``: ``launch_ros`` writes list parameters as
-    ``!!python/tuple [...]``, which rcl reads as a plain sequence.
+    The bools are exactly rcl's (``y``/``n``/``yes``/``on``/``off``... in three spellings), ints
+    what ``strtoll`` base 0 reads whole in int64 (``0x1F``, octal ``010``), doubles what
+    ``strtod`` reads whole without ERANGE (``1e3``, ``inf``, ``nan``, ``.inf``, ``0x1p3``); an
+    integer beyond int64 is a double and a number beyond a double stays a string, as in rcl.
     """
-    if isinstance(node, yaml.SequenceNode):
-        return loader.construct_sequence(node, deep=True)
-    if isinstance(node, yaml.MappingNode):
-        return loader.construct_mapping(node, deep=True)
-    style = getattr(node, 'style', None)
-    plain = not style  # plain scalars: None (PyYAML) or '' (libyaml)
-    tag = loader.resolve(yaml.ScalarNode, node.value, (plain, not plain))
-    return loader.construct_object(yaml.ScalarNode(tag, node.value, style=style))
+    if str_tag or quoted:
+        return text
+    if text in _RCL_TRUE:
+        return True
+    if text in _RCL_FALSE:
+        return False
+    integer = _c_strtoll(text)
+    if integer is not None:
+        return integer
+    special = _RCL_SPECIAL_DOUBLES.get(text)
+    if special is not None:
+        return special
+    double = _c_strtod(text)
+    return text if double is None else double
 
 
-_YamlLoader.add_multi_constructor('', _ignore_tag)
+_KIND_ORDER = (bool, int, float, str)  # rclpy's order when a value fills several slots
+_RCL_KIND_NAMES = {bool: 'bool', int: 'integer', float: 'double', str: 'string'}
 
 
-def parse_param_value(text: str) -> Any:
+class _Variant:
+    """
+    The slots of the ``rcl_variant_t`` one value fills, and the one rclpy reads from them.
+
+    rcl keeps a slot per type: a scalar after a sequence (``[[1], 2]``) or a second inner
+    sequence (``[[1, 2], [3]]``) fills or replaces a slot, and rclpy takes the first filled
+    slot in its order (scalars bool, int, double, string, then the arrays in the same order).
+    """
+
+    def __init__(self) -> None:
+        self.scalars: dict[type, Any] = {}
+        self.arrays: dict[type, list[Any]] = {}
+        self._sequence_kind: type | None = None
+
+    def start_sequence(self) -> None:
+        self._sequence_kind = None
+
+    def add(self, value: bool | int | float | str, in_sequence: bool, line: int) -> None:
+        kind = type(value)
+        if not in_sequence:
+            self.scalars[kind] = value
+            return
+        if self._sequence_kind is None:
+            self._sequence_kind = kind
+            self.arrays[kind] = []
+        elif self._sequence_kind is not kind:
+            msg = (
+                f"Sequence should be of same type. Value type '{_RCL_KIND_NAMES[kind]}' "
+                f'do not belong at line_num {line}'
+            )
+            raise _RuleError(msg)
+        self.arrays[kind].append(value)
+
+    def value(self) -> Any:
+        for kind in _KIND_ORDER:
+            if kind in self.scalars:
+                return self.scalars[kind]
+        for kind in _KIND_ORDER:
+            if kind in self.arrays:
+                return self.arrays[kind]
+        return None
+
+
+class _TabTolerantScanner(yaml.reader.Reader, yaml.scanner.Scanner):
+    """
+    PyYAML's pure scanner, taking tabs between the lines of a plain scalar as libyaml does.
+
+    PyYAML refuses every tab there; libyaml (rcl's parser) takes blanks of either kind and
+    refuses only a tab left of the scalar's indentation. A URDF given with ``-p`` is one plain
+    scalar, and real URDFs have tab-indented lines (panda.urdf).
+    """
+
+    def scan_plain_spaces(self, indent: int, start_mark: yaml.Mark) -> list[str] | None:
+        length = 0
+        while self.peek(length) in ' \t':
+            length += 1
+        blanks = self.prefix(length)
+        self.forward(length)
+        if self.peek() not in _BREAKS:
+            return [blanks] if blanks else []
+        first_break = self._line_break()
+        self.allow_simple_key = True
+        if self._at_document_marker():
+            return None
+        breaks: list[str] = []
+        while self.peek() in ' \t' + _BREAKS:
+            character = self.peek()
+            if character == ' ':
+                self.forward()
+            elif character == '\t':
+                if self.column < indent:
+                    raise yaml.scanner.ScannerError(
+                        'while scanning a plain scalar',
+                        start_mark,
+                        'found a tab character that violates indentation',
+                        self.get_mark(),
+                    )
+                self.forward()
+            else:
+                breaks.append(self._line_break())
+                if self._at_document_marker():
+                    return None
+        if first_break != '\n':
+            return [first_break, *breaks]
+        return breaks or [' ']
+
+    def _line_break(self) -> str:
+        return str(self.scan_line_break())  # type: ignore[no-untyped-call]
+
+    def _at_document_marker(self) -> bool:
+        return self.prefix(3) in ('---', '...') and self.peek(3) in '\0 \t' + _BREAKS
+
+
+class PureYamlEventLoader(_TabTolerantScanner, yaml.parser.Parser):
+    """PyYAML's pure-Python reader and parser with :class:`_TabTolerantScanner`: events only."""
+
+    def __init__(self, stream: str) -> None:
+        yaml.reader.Reader.__init__(self, stream)
+        yaml.scanner.Scanner.__init__(self)
+        yaml.parser.Parser.__init__(self)
+
+
+#: The event parser: libyaml where PyYAML has it (rcl's own), else the pure one above.
+YAML_EVENT_LOADER: Any = getattr(yaml, 'CSafeLoader', PureYamlEventLoader)
+
+
+class _LineError(_RuleError):
+    """A problem at one line of a YAML text (a params file names its path before the line)."""
+
+    def __init__(self, line: int, reason: str) -> None:
+        super().__init__(f'line {line}: {reason}')
+        self.line = line
+        self.reason = reason
+
+
+def _yaml_events(text: str, loader: Any) -> Iterator[yaml.Event]:
+    """Yield the YAML events of ``text``; a syntax error becomes a one-line _LineError."""
+    events = yaml.parse(text, Loader=loader)
+    while True:
+        try:
+            event = next(events)
+        except StopIteration:
+            return
+        except yaml.YAMLError as error:
+            mark = getattr(error, 'problem_mark', None) or getattr(error, 'context_mark', None)
+            problem = getattr(error, 'problem', None) or str(error).splitlines()[0]
+            if mark is None:
+                raise _LineError(1, f'invalid YAML: {problem}') from None
+            reason = f'invalid YAML (column {mark.column + 1}): {problem}'
+            raise _LineError(mark.line + 1, reason) from None
+        yield event
+
+
+def _line(event: yaml.Event) -> int:
+    mark = event.start_mark
+    return mark.line + 1 if mark is not None else 0
+
+
+def _event_scalar(event: yaml.ScalarEvent) -> bool | int | float | str:
+    return rcl_scalar(
+        event.value, quoted=event.style in _QUOTED_STYLES, str_tag=event.tag == _STR_TAG
+    )
+
+
+def _too_deep(line: int) -> _LineError:
+    return _LineError(line, f'nesting deeper than {MAX_YAML_NESTING} levels')
+
+
+def parse_param_value(text: str, *, loader: Any = None) -> Any:
     """
     Type a ``-p`` value as rcl does: bool, int, double, string or a homogeneous array.
 
-    :raises ValueError: for a value no parameter can hold (a mapping, a mixed or empty array).
+    :param loader: the YAML event parser (default :data:`YAML_EVENT_LOADER`, libyaml).
+    :raises ValueError: for a value rcl refuses (empty, a mapping, an alias, a mixed array,
+        invalid YAML), for no value at all (``[]``, only a comment), or nesting deeper than
+        :data:`MAX_YAML_NESTING`.
     """
-    try:
-        value = yaml.load(text, Loader=_YamlLoader)  # a SafeLoader subclass
-    except yaml.YAMLError as error:
-        msg = f'invalid YAML value {text!r} ({_yaml_problem(error)})'
-        raise _RuleError(msg) from None
-    return _check_param_value(value, text)
-
-
-def _yaml_problem(error: yaml.YAMLError) -> str:
-    problem = getattr(error, 'problem', None)
-    return str(problem) if problem else str(error).splitlines()[0]
-
-
-def _check_param_value(value: Any, shown: Any) -> Any:
+    if not text:
+        msg = "empty value (write '' for an empty string)"
+        raise _RuleError(msg)
+    variant = _Variant()
+    depth = 0
+    in_sequence = False
+    for event in _yaml_events(text, YAML_EVENT_LOADER if loader is None else loader):
+        if isinstance(event, yaml.ScalarEvent):
+            if not event.value and event.style not in _QUOTED_STYLES:
+                msg = f'No value at line {_line(event)}'
+                raise _RuleError(msg)
+            variant.add(_event_scalar(event), in_sequence, _line(event))
+        elif isinstance(event, yaml.SequenceStartEvent):
+            depth += 1
+            if depth > MAX_YAML_NESTING:
+                raise _too_deep(_line(event))
+            in_sequence = True
+            variant.start_sequence()
+        elif isinstance(event, yaml.SequenceEndEvent):
+            depth -= 1
+            in_sequence = False  # as rcl: an inner sequence's end ends the array
+        elif isinstance(event, yaml.MappingStartEvent):
+            msg = 'a mapping is not a parameter value (nested names belong in a --params-file)'
+            raise _RuleError(msg)
+        elif isinstance(event, yaml.AliasEvent):
+            msg = 'an alias (*name) is not a parameter value'
+            raise _RuleError(msg)
+    value = variant.value()
     if value is None:
-        return ''  # rcl keeps an empty or null scalar as an empty string
-    if isinstance(value, (bool, int, float, str)):
-        return value
-    if isinstance(value, list):
-        if not value:
-            msg = f'empty array {shown!r}: the element type cannot be determined'
-            raise _RuleError(msg)
-        kinds = {_scalar_kind(item) for item in value}
-        if None in kinds or len(kinds) != 1:
-            msg = f'Sequence should be of same type: {shown!r}'
-            raise _RuleError(msg)
-        return value
-    if isinstance(value, bytes):
-        return list(value)
-    msg = f'unsupported value {shown!r}: expected a scalar or an array of scalars'
-    raise _RuleError(msg)
+        msg = f'no value in {_shorten(text)!r}: the parameter type cannot be determined'
+        raise _RuleError(msg)
+    return value
 
 
-def _scalar_kind(item: Any) -> str | None:
-    if isinstance(item, bool):
-        return 'bool'
-    if isinstance(item, int):
-        return 'int'
-    if isinstance(item, float):
-        return 'float'
-    if isinstance(item, str):
-        return 'str'
-    return None
+def _shorten(text: str, limit: int = 60) -> str:
+    """Return ``text`` as it is, or on one line its start and length when long (a URDF)."""
+    if len(text) <= limit and '\n' not in text:
+        return text
+    start = text[:limit].replace('\r', '\\r').replace('\n', '\\n').replace('\t', '\\t')
+    return f'{start}... ({len(text)} characters)'
+
+
+_RCL_SOURCE_LOCATION = re.compile(r'\s*, at \S+\.(?:c|cpp):\d+')
+_RCL_INIT_PREFIX = 'failed to initialize rcl: '
+
+
+def explain_rcl_error(message: str, argv: Sequence[str]) -> str:
+    """
+    Return rcl's text for bad ROS arguments as one line that says what to do.
+
+    rcl's own message (from ``rclpy.init``) echoes the whole rule, a whole URDF for
+    ``-p robot_description:=...``, and ends with C source locations: the rule is shortened,
+    the locations dropped and, for a value rcl could not read as YAML, advice added.
+    """
+    text = _RCL_SOURCE_LOCATION.sub('', message.removeprefix(_RCL_INIT_PREFIX))
+    advice = ''
+    for flag, rule in itertools.pairwise(argv):
+        quoted = f"'{flag} {rule}'"
+        if quoted not in text:
+            continue
+        text = text.replace(quoted, f"'{flag} {_shorten(rule)}'")
+        if flag in _PARAM_FLAGS and ':=' in rule:
+            name, _, value = rule.partition(':=')
+            advice = _param_value_advice(name.rpartition(':')[2], value)
+        break
+    text = ' '.join(text.split())
+    return f'{text}; {advice}' if advice else text
+
+
+def _param_value_advice(name: str, value_text: str) -> str:
+    """Say what to do instead when a long or XML value given with ``-p`` is not valid YAML."""
+    stripped = value_text.lstrip()
+    if name == 'robot_description' or stripped.startswith('<'):
+        return (
+            'rcl reads every -p value as YAML, and this XML is not a valid YAML value: '
+            'pass the file instead (-p urdf_file:=<path to the .urdf or .xacro>) or put '
+            "robot_description in a --params-file as a block scalar ('robot_description: |')"
+        )
+    if '\n' in value_text:
+        return (
+            'rcl reads every -p value as YAML: put a multi-line value in a --params-file '
+            "as a block scalar ('name: |')"
+        )
+    return ''
+
+
+def _check_file_scalar(event: yaml.ScalarEvent, name: str) -> bool | int | float | str:
+    if not event.value and event.style not in _QUOTED_STYLES:
+        raise _LineError(_line(event), f"parameter '{name}' has no value")
+    return _event_scalar(event)
 
 
 def _split_rule(rule: str) -> tuple[str | None, str, str]:
@@ -440,7 +764,15 @@ def _parse_param_rule(rule: str) -> ParamRule:
     if not _PARAM_NAME.fullmatch(name):
         msg = f"Invalid parameter name '{name}'"
         raise _RuleError(msg)
-    return ParamRule(node=node, name=name, value=parse_param_value(value_text))
+    try:
+        value = parse_param_value(value_text)
+    except _RuleError as error:
+        advice = _param_value_advice(name, value_text)
+        if not advice:
+            raise
+        msg = f'{error}; {advice}'
+        raise _RuleError(msg) from None
+    return ParamRule(node=node, name=name, value=value)
 
 
 def _parse_remap_rule(rule: str) -> RemapRule:
@@ -527,65 +859,148 @@ def _parse_enclave(value: str) -> str:
 
 def _parse_params_file(path: str) -> ParamsFile:
     try:
-        with open(path, encoding='utf-8') as stream:
-            document = yaml.load(stream, Loader=_YamlLoader)  # a SafeLoader subclass
-    except OSError as error:
-        msg = f'Error opening YAML file ({error.strerror})'
+        text = read_text_file(path)
+    except InputFileError as error:
+        raise _RuleError(str(error)) from None
+    try:
+        entries = _params_file_entries(_yaml_events(text, YAML_EVENT_LOADER))
+    except _LineError as error:
+        msg = f'{path}:{error.line}: {error.reason}'
         raise _RuleError(msg) from None
-    except yaml.YAMLError as error:
-        mark = getattr(error, 'problem_mark', None)
-        where = f' at line {mark.line + 1}' if mark is not None else ''
-        msg = f'Error parsing YAML file{where}: {_yaml_problem(error)}'
-        raise _RuleError(msg) from None
-    if document is None:
-        return ParamsFile(path=path, entries=())
-    if not isinstance(document, dict):
-        msg = 'the top level must be a mapping of node names'
-        raise _RuleError(msg)
-    entries: list[tuple[str, tuple[tuple[str, Any], ...]]] = []
-    _collect_nodes(document, [], entries)
     return ParamsFile(path=path, entries=tuple(entries))
 
 
-def _collect_nodes(
-    mapping: dict[Any, Any],
-    namespace: list[str],
-    entries: list[tuple[str, tuple[tuple[str, Any], ...]]],
-) -> None:
-    for key, value in mapping.items():
-        if not isinstance(key, str):
-            msg = f'node name {key!r} is not a string'
-            raise _RuleError(msg)
-        if key == 'ros__parameters':
-            if not namespace:
-                msg = "'ros__parameters' must be inside a node name"
-                raise _RuleError(msg)
-            node_key = '/' + '/'.join(part.strip('/') for part in namespace)
-            if not isinstance(value, dict):
-                msg = f"'ros__parameters' of '{node_key}' must be a mapping"
-                raise _RuleError(msg)
-            flattened: list[tuple[str, Any]] = []
-            _flatten_parameters(value, '', flattened)
-            entries.append((node_key, tuple(flattened)))
-        elif isinstance(value, dict):
-            _collect_nodes(value, [*namespace, key], entries)
-        else:
-            where = '/'.join([*namespace, key])
-            msg = f"'{where}' is not a node name: expected a mapping with 'ros__parameters'"
-            raise _RuleError(msg)
+@dataclass
+class _Frame:
+    """One open YAML collection of a params file, with what its contents mean."""
+
+    role: str  # 'nodes' (node names), 'params' (parameter names) or 'array' (a list value)
+    names: tuple[str, ...] = ()  # the node name parts of a 'nodes' frame
+    node_key: str = ''
+    prefix: str = ''  # 'a.b.' inside a parameter namespace; the name itself for an 'array'
+    key: str | None = None  # a mapping's key waiting for its value
+    out: list[tuple[str, Any]] = field(default_factory=list)
+    variant: _Variant | None = None
 
 
-def _flatten_parameters(mapping: dict[Any, Any], prefix: str, out: list[tuple[str, Any]]) -> None:
-    for key, value in mapping.items():
-        name = f'{prefix}{key}'
-        if isinstance(value, dict):
-            _flatten_parameters(value, f'{name}.', out)
+_Entries = list[tuple[str, tuple[tuple[str, Any], ...]]]
+_DOCUMENT_EVENTS = (
+    yaml.StreamStartEvent,
+    yaml.StreamEndEvent,
+    yaml.DocumentStartEvent,
+    yaml.DocumentEndEvent,
+)
+
+
+def _params_file_entries(events: Iterator[yaml.Event]) -> _Entries:
+    """
+    Read rcl's params-file schema from YAML events, iteratively.
+
+    ``<node key>: {ros__parameters: {...}}``; mappings above ``ros__parameters`` are
+    namespaces, mappings below it dotted parameter names. As rcl: aliases, nested lists and a
+    parameter without a value are refused; tags are ignored but ``!!str``.
+    """
+    entries: _Entries = []
+    stack: list[_Frame] = []
+    for event in events:
+        if isinstance(
+            event,
+            _DOCUMENT_EVENTS,
+        ):
+            continue
+        line = _line(event)
+        if isinstance(event, yaml.AliasEvent):
+            msg = 'aliases (*name) are not supported, as in rcl'
+            raise _LineError(line, msg)
+        if not stack:
+            _open_document(event, stack, line)
+            continue
+        frame = stack[-1]
+        if isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
+            _close(stack.pop(), stack, entries, line)
+        elif frame.role == 'array':
+            _array_item(event, frame, line)
+        elif frame.key is None:
+            if not isinstance(event, yaml.ScalarEvent) or not event.value:
+                msg = 'a key must be a non-empty name'
+                raise _LineError(line, msg)
+            frame.key = event.value
         else:
-            try:
-                out.append((name, _check_param_value(value, value)))
-            except _RuleError as error:
-                msg = f"parameter '{name}': {error}"
-                raise _RuleError(msg) from None
+            child = (
+                _node_value(event, frame, line)
+                if frame.role == 'nodes'
+                else _parameter_value(event, frame)
+            )
+            frame.key = None
+            if child is not None:
+                if len(stack) >= MAX_YAML_NESTING:
+                    raise _too_deep(line)
+                stack.append(child)
+    return entries
+
+
+def _open_document(event: yaml.Event, stack: list[_Frame], line: int) -> None:
+    if isinstance(event, yaml.MappingStartEvent):
+        stack.append(_Frame('nodes'))
+    elif not (isinstance(event, yaml.ScalarEvent) and not event.value and not event.style):
+        msg = 'the top level must be a mapping of node names'
+        raise _LineError(line, msg)  # an empty document (a plain empty scalar) is nothing
+
+
+def _close(frame: _Frame, stack: list[_Frame], entries: _Entries, line: int) -> None:
+    if frame.role == 'array':
+        assert frame.variant is not None
+        value = frame.variant.value()
+        if value is None:
+            msg = f"parameter '{frame.prefix}': empty array: the element type cannot be determined"
+            raise _LineError(line, msg)
+        frame.out.append((frame.prefix, value))
+    elif frame.role == 'params' and stack[-1].role != 'params':
+        entries.append((frame.node_key, tuple(frame.out)))
+
+
+def _array_item(event: yaml.Event, frame: _Frame, line: int) -> None:
+    if not isinstance(event, yaml.ScalarEvent):
+        msg = (
+            f"parameter '{frame.prefix}': a list or mapping inside a list is not a parameter value"
+        )
+        raise _LineError(line, msg)
+    assert frame.variant is not None
+    try:
+        frame.variant.add(_check_file_scalar(event, frame.prefix), True, line)
+    except _RuleError as error:
+        raise _LineError(line, f"parameter '{frame.prefix}': {error}") from None
+
+
+def _node_value(event: yaml.Event, frame: _Frame, line: int) -> _Frame | None:
+    """Read the value of a key above ``ros__parameters``: a node name part or the parameters."""
+    key = frame.key
+    assert key is not None
+    if key == 'ros__parameters':
+        if not frame.names:
+            msg = "'ros__parameters' must be inside a node name"
+            raise _LineError(line, msg)
+        node_key = '/' + '/'.join(part.strip('/') for part in frame.names)
+        if not isinstance(event, yaml.MappingStartEvent):
+            msg = f"'ros__parameters' of '{node_key}' must be a mapping"
+            raise _LineError(line, msg)
+        return _Frame('params', node_key=node_key)
+    if not isinstance(event, yaml.MappingStartEvent):
+        where = '/'.join([*frame.names, key])
+        msg = f"'{where}' is not a node name: expected a mapping with 'ros__parameters'"
+        raise _LineError(line, msg)
+    return _Frame('nodes', names=(*frame.names, key))
+
+
+def _parameter_value(event: yaml.Event, frame: _Frame) -> _Frame | None:
+    """Read the value of a key below ``ros__parameters``: a value, a list or a namespace."""
+    name = f'{frame.prefix}{frame.key}'
+    if isinstance(event, yaml.ScalarEvent):
+        frame.out.append((name, _check_file_scalar(event, name)))
+        return None
+    if isinstance(event, yaml.SequenceStartEvent):
+        return _Frame('array', prefix=name, out=frame.out, variant=_Variant())
+    return _Frame('params', node_key=frame.node_key, prefix=f'{name}.', out=frame.out)
 
 
 def _node_key_matches(key: str, node_fqn: str) -> bool:
