@@ -124,7 +124,12 @@ class _Reader:
         raise UrdfMalformedError(self.source, element, reason, _line(node))
 
     def number(
-        self, text: str | None, element: str, attribute: str, node: etree._Element
+        self,
+        text: str | None,
+        element: str,
+        attribute: str,
+        node: etree._Element,
+        whole: str | None = None,
     ) -> float:
         """
         Parse one double as urdfdom does; the one place every number of a URDF goes through.
@@ -132,15 +137,14 @@ class _Reader:
         Anything that is not a decimal number (``inf``, ``nan``, hex, ``1_0``) is refused, and so
         is a number too large for a double (``1e400``), as urdfdom refuses them.
         """
+        label = f'attribute {attribute}="{text}"'
+        if whole is not None:  # one piece of a vector attribute
+            label = f'attribute {attribute}="{whole}": {text}'
         if text is None or not _NUMBER.fullmatch(text.strip()):
-            self.malformed(element, f'attribute {attribute}="{text}" is not a number', node)
+            self.malformed(element, f'{label} is not a number', node)
         value = float(text.strip())
         if not math.isfinite(value):
-            self.malformed(
-                element,
-                f'attribute {attribute}="{text}" is out of range (not a finite double)',
-                node,
-            )
+            self.malformed(element, f'{label} is out of range (not a finite double)', node)
         return value
 
     def optional_number(
@@ -160,14 +164,14 @@ class _Reader:
         if text is None:
             return None
         pieces = text.split()
-        if len(pieces) != count or not all(_NUMBER.fullmatch(p) for p in pieces):
+        if len(pieces) != count:
             words = {3: 'three', 4: 'four'}.get(count, str(count))
             self.malformed(
                 element,
                 f'attribute {attribute}="{text}" is not {words} numbers separated by spaces',
                 node,
             )
-        return tuple(self.number(piece, element, attribute, node) for piece in pieces)
+        return tuple(self.number(piece, element, attribute, node, text) for piece in pieces)
 
     def vector(self, node: etree._Element, attribute: str, element: str, default: Vec3) -> Vec3:
         """Parse ``"x y z"``: exactly three space-separated finite numbers."""

@@ -65,6 +65,8 @@ MAX_INCLUDE_DEPTH = 50
 #: Address-space limit of the child process.
 MEMORY_LIMIT_BYTES = 2 * 1024 * 1024 * 1024
 _RECURSION_LIMIT = 10_000
+_TOO_DEEP = 'nesting too deep (a macro that calls itself, or a file that includes itself?)'
+_TOO_BIG = f'the expansion needs more than {MEMORY_LIMIT_BYTES // (1024 * 1024)} MiB of memory'
 
 
 def _nesting_error(what: str, limit: int, names: Sequence[str]) -> Exception:
@@ -165,12 +167,9 @@ def expand_in_process(
             source, 'XML', f'malformed XML: {error}', getattr(error, 'lineno', None)
         ) from None
     except RecursionError:
-        msg = 'nesting too deep (a macro that calls itself, or a file that includes itself?)'
-        raise UrdfMalformedError(source, 'xacro', msg) from None
+        raise UrdfMalformedError(source, 'xacro', _TOO_DEEP) from None
     except MemoryError:
-        limit = MEMORY_LIMIT_BYTES // (1024 * 1024)
-        msg = f'expansion needs more than {limit} MiB of memory'
-        raise UrdfMalformedError(source, 'xacro', msg) from None
+        raise UrdfMalformedError(source, 'xacro', _TOO_BIG) from None
     except Exception as error:  # xacro evaluates user code: any exception is the file's error
         raise _error_from_xacro(source, error) from None
     if len(text) > MAX_TEXT_FILE_BYTES:
@@ -182,6 +181,10 @@ def expand_in_process(
 def _error_from_xacro(source: str, error: Exception) -> UrdfError:
     """Turn what xacro raised into a UrdfError naming the file and the reason."""
     cause = getattr(error, 'exc', None)
+    if isinstance(cause, RecursionError):
+        return UrdfMalformedError(source, 'xacro', _TOO_DEEP)
+    if isinstance(cause, MemoryError):
+        return UrdfMalformedError(source, 'xacro', _TOO_BIG)
     if isinstance(cause, PackageNotFoundError):
         return UrdfBrokenRefError(source, 'xacro', str(cause))
     for candidate in (cause, error):
@@ -189,7 +192,8 @@ def _error_from_xacro(source: str, error: Exception) -> UrdfError:
             return UrdfBrokenRefError(
                 source, 'xacro', f'{candidate.strerror}: {candidate.filename}'
             )
-    reason = str(error) or type(error).__name__
+    lines = [line.strip() for line in str(error).splitlines() if line.strip()]
+    reason = '; '.join(lines) or type(error).__name__
     if type(error).__name__ != 'XacroException' and not isinstance(error, OSError):
         reason = f'{type(error).__name__}: {reason}'
     return UrdfMalformedError(source, 'xacro', f'xacro failed: {reason}')
