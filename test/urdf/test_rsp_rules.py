@@ -23,6 +23,7 @@ import random
 
 import pytest
 from tf_demo.nodes.robot_state_publisher import check_publish_frequency
+from tf_demo.nodes.robot_state_publisher import DroppedMessageLog
 from tf_demo.nodes.robot_state_publisher import joint_state_problem
 from tf_demo.nodes.robot_state_publisher import JointStateThrottle
 from tf_demo.nodes.robot_state_publisher import positions_from_joint_state
@@ -140,6 +141,33 @@ def test_invalid_joint_states_are_reported_with_upstream_texts() -> None:
         40,
         'Robot state publisher ignored an invalid JointState message',
     )
+
+
+def test_velocity_or_effort_of_the_wrong_length_makes_a_joint_state_invalid() -> None:
+    """velocity/effort empty or one per name; any other length drops the message (a warning)."""
+    assert joint_state_problem(['a', 'b'], [1.0, 2.0], [], [0.0, 0.0]) is None
+    assert joint_state_problem(['a'], [1.0], [math.nan], [math.inf]) is None  # values unused
+    assert joint_state_problem(['a'], [1.0], [0.1, 0.2]) == (
+        30,
+        'Robot state publisher ignored a JointState message with 1 names but 2 velocity values',
+    )
+    assert joint_state_problem(['a', 'b'], [1.0, 2.0], [], [3.0]) == (
+        30,
+        'Robot state publisher ignored a JointState message with 2 names but 1 effort values',
+    )
+
+
+def test_dropped_message_warnings_are_throttled_with_a_count() -> None:
+    """First of a kind at once; then one line per interval saying how many went unlogged."""
+    log = DroppedMessageLog(interval_s=5.0)
+    assert log.text('nan', 'dropped', 100.0) == 'dropped'
+    assert [log.text('nan', 'dropped', 100.0 + i / 10) for i in range(1, 40)] == [None] * 39
+    assert log.text('other', 'another kind', 101.0) == 'another kind'
+    assert log.text('nan', 'dropped', 105.0) == (
+        'dropped (39 more such message(s) dropped in the last 5 s)'
+    )
+    assert log.text('nan', 'dropped', 111.0) == 'dropped'
+    assert log.text('nan', 'dropped', 112.0) is None
 
 
 def test_repeated_joint_name_keeps_its_first_position() -> None:

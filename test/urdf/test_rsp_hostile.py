@@ -1,0 +1,264 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""robot_state_publisher and friends as processes, fed hostile input: they keep running."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+import contextlib
+import math
+from pathlib import Path
+import shutil
+import subprocess
+from typing import Any
+
+import pytest
+from ros_world.jazzy import require_package
+from ros_world.jazzy import stop
+from test_rsp_dds import joint_state
+from test_rsp_dds import Running
+from test_rsp_dds import SAMPLES
+from test_rsp_dds import SECOND
+from test_rsp_dds import wait_until
+from test_rsp_dds import World
+from tf_demo.urdf import expand_xacro
+
+pytestmark = [pytest.mark.dds, pytest.mark.timeout(240)]
+
+RELIABLE_INPUT = (
+    '-p',
+    'qos_overrides./joint_states.subscription.reliability:=reliable',
+    '-p',
+    'qos_overrides./joint_states.subscription.depth:=200',
+)
+NOT_FINITE = 'position inf is not a finite number'
+
+
+@pytest.fixture
+def nodes(world_env: dict[str, str]) -> Iterator[World]:
+    """In-process nodes on the test's domain (test_rsp_dds's World)."""
+    del world_env
+    created = World()
+    try:
+        yield created
+    finally:
+        created.close()
+
+
+@contextlib.contextmanager
+def upstream_rsp(env: dict[str, str], *args: str) -> Iterator[Running]:
+    """The real robot_state_publisher (``ros2 run``), stopped with Ctrl-C at the end."""
+    process = subprocess.Popen(
+        ['ros2', 'run', 'robot_state_publisher', 'robot_state_publisher', '--ros-args', *args],
+        env=env,
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    try:
+        yield Running(process)
+    finally:
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            stop(process)
+
+
+def reliable_publisher(client: Any, topic: str) -> Any:
+    from tf_demo.transport.messages import sensor_msgs
+    from tf_demo.transport.qos import QoSProfile
+    from tf_demo.transport.qos import ReliabilityPolicy
+
+    qos = QoSProfile(depth=200, reliability=ReliabilityPolicy.RELIABLE)
+    return client.create_publisher(sensor_msgs.JointState, topic, qos)
+
+
+def test_non_finite_and_mismatched_joint_states_are_dropped_and_publishing_goes_on(
+    spawn: Any, nodes: World
+) -> None:
+    """inf/nan positions and a velocity of the wrong length: warned (throttled), dropped."""
+    from tf_demo.transport.messages import tf2_msgs
+
+    rsp = Running(
+        spawn.start(
+            'robot_state_publisher',
+            '--ros-args',
+            '-p',
+            f'urdf_file:={SAMPLES / "example_revolute.urdf"}',
+            *RELIABLE_INPUT,
+        )
+    )
+    client = nodes.node('hostile_states')
+    received: list[Any] = []
+    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 100)
+    publisher = reliable_publisher(client, 'joint_states')
+    nodes.start()
+    wait_until(lambda: publisher.get_subscription_count() >= 1, what='rsp subscription')
+    wait_until(lambda: client.count_publishers('/tf') >= 1, what='rsp /tf publisher')
+    joint = 'frame_1_to_frame_2'
+    publisher.publish(joint_state([joint], [math.inf], 2000 * SECOND))
+    rsp.wait_for(
+        f"Robot state publisher ignored a JointState message: joint '{joint}': {NOT_FINITE}"
+    )
+    wrong_velocity = joint_state([joint], [0.1], 2001 * SECOND)
+    wrong_velocity.velocity = [0.0, 1.0]
+    publisher.publish(wrong_velocity)
+    rsp.wait_for('ignored a JointState message with 1 names but 2 velocity values')
+    for index in range(100):
+        bad = math.nan if index % 2 else -math.inf
+        publisher.publish(joint_state([joint], [bad], (2002 + index) * SECOND))
+    publisher.publish(joint_state([joint], [0.25], 3000 * SECOND))
+    wait_until(lambda: bool(received), timeout=30, what='the valid message on /tf')
+    [message] = received
+    [transform] = message.transforms
+    assert (transform.header.stamp.sec, transform.child_frame_id) == (3000, 'frame_2')
+    assert transform.transform.rotation.z == pytest.approx(math.sin(0.125))
+    assert rsp.process.poll() is None
+    warnings = [line for line in rsp.lines if 'is not a finite number' in line]
+    assert 1 <= len(warnings) < 10, warnings  # 101 bad messages, throttled per 5 s
+    assert not [line for line in rsp.lines if 'Traceback' in line or 'ValueError' in line]
+
+
+@pytest.mark.parametrize(
+    'command',
+    [
+        ('robot_state_publisher', '--ros-args', '-p', 'urdf_file:=/dev/zero'),
+        ('joint_state_publisher', '/dev/zero'),
+        ('static_tf_pub', '--ros-args', '-p', 'transforms_file:=/dev/zero'),
+    ],
+    ids=['robot_state_publisher', 'joint_state_publisher', 'static_tf_pub'],
+)
+def test_a_device_as_input_file_is_refused_with_one_line(
+    spawn: Any, command: tuple[str, ...]
+) -> None:
+    """/dev/zero is not read until memory runs out: exit code 1 and one line naming it."""
+    process = spawn.start(*command)
+    _, stderr = process.communicate(timeout=120)
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    assert process.returncode == 1, stderr
+    assert len(lines) == 1, stderr
+    assert '/dev/zero' in lines[0]
+    assert 'not a regular file' in lines[0]
+
+
+def test_a_recursive_xacro_as_urdf_file_is_refused_with_one_line(
+    spawn: Any, tmp_path: Path
+) -> None:
+    """A macro that calls itself: one line naming the file and the macro, no RecursionError."""
+    path = tmp_path / 'again.urdf.xacro'
+    path.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="a"/>'
+        '<xacro:macro name="again"><xacro:again/></xacro:macro><xacro:again/></robot>',
+        encoding='utf-8',
+    )
+    process = spawn.start('robot_state_publisher', '--ros-args', '-p', f'urdf_file:={path}')
+    _, stderr = process.communicate(timeout=120)
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    assert process.returncode == 1, stderr
+    assert len(lines) == 1, stderr
+    assert f'{path}: xacro: xacro failed: macros nested deeper than' in lines[0]
+    assert '(again -> again' in lines[0]
+
+
+def test_the_course_command_runs_on_the_sample_robot(
+    spawn: Any, world_env: dict[str, str]
+) -> None:
+    """-p robot_description:="$(xacro urdf/mobile_robot.urdf.xacro)" starts the node (and, in
+    the ROS world, the real robot_state_publisher on the real xacro's output)."""
+    sample = SAMPLES / 'mobile_robot.urdf.xacro'
+    description = f'robot_description:={expand_xacro(sample)}'
+    ours = Running(spawn.start('robot_state_publisher', '--ros-args', '-p', description))
+    ours.wait_for('Robot initialized', timeout=60)
+    assert ours.process.poll() is None
+    xacro = shutil.which('xacro')
+    if shutil.which('ros2') is None or xacro is None:
+        return  # the standalone world has no upstream robot_state_publisher
+    require_package(world_env, 'robot_state_publisher')
+    text = subprocess.run(
+        [xacro, str(sample)], capture_output=True, text=True, timeout=60, check=True
+    ).stdout
+    arguments = ('-r', '__ns:=/upstream', '-p', f'robot_description:={text}')
+    with upstream_rsp(world_env, *arguments) as theirs:
+        theirs.wait_for('Robot initialized', timeout=60)
+        assert theirs.process.poll() is None
+
+
+GHOST_MIMIC = (
+    '<robot name="r"><link name="a"/><link name="b"/>'
+    '<joint name="j" type="continuous"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>'
+    '<mimic joint="ghost" multiplier="2"/></joint></robot>'
+)
+
+
+def test_a_mimic_of_a_missing_joint_loads_and_publishes_as_upstream(
+    spawn: Any, nodes: World, world_env: dict[str, str]
+) -> None:
+    """The robot loads with one warning naming the joint; j is published as an ordinary joint
+    (in the ROS world, the real robot_state_publisher publishes the same transform)."""
+    from tf_demo.transport.messages import tf2_msgs
+
+    ours = Running(
+        spawn.start(
+            'robot_state_publisher',
+            '--ros-args',
+            '-p',
+            f'robot_description:={GHOST_MIMIC}',
+            *RELIABLE_INPUT,
+        )
+    )
+    upstream_wanted = shutil.which('ros2') is not None
+    if upstream_wanted:
+        require_package(world_env, 'robot_state_publisher')
+    client = nodes.node('ghost_mimic')
+    received: list[Any] = []
+    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 100)
+    publishers = [reliable_publisher(client, 'joint_states')]
+    arguments = (
+        '-r', '__ns:=/upstream', '-p', 'frame_prefix:=upstream/',
+        '-p', f'robot_description:={GHOST_MIMIC}', *RELIABLE_INPUT,
+    )  # fmt: skip
+    if upstream_wanted:
+        publishers.append(reliable_publisher(client, '/upstream/joint_states'))
+    nodes.start()
+    context = upstream_rsp(world_env, *arguments) if upstream_wanted else contextlib.nullcontext()
+    with context as theirs:
+        ours.wait_for("joint 'j' mimics joint 'ghost', which does not exist", timeout=60)
+        for publisher in publishers:
+            wait_until(
+                lambda publisher=publisher: publisher.get_subscription_count() >= 1,
+                timeout=60,
+                what='a robot_state_publisher subscription',
+            )
+            publisher.publish(joint_state(['j', 'ghost'], [math.pi / 2, 1.0], 2000 * SECOND))
+        children = {'b'} | ({'upstream/b'} if upstream_wanted else set())
+
+        def published() -> dict[str, Any]:
+            found = {}
+            for message in received.copy():
+                for transform in message.transforms:
+                    found[transform.child_frame_id] = transform.transform.rotation
+            return found
+
+        wait_until(lambda: children <= set(published()), timeout=30, what=f'{children} on /tf')
+        half = math.sqrt(0.5)
+        for child, rotation in published().items():
+            assert (rotation.x, rotation.y, rotation.z, rotation.w) == pytest.approx(
+                (0.0, 0.0, half, half)
+            ), child
+        if theirs is not None:
+            assert theirs.process.poll() is None
+    warnings = [line for line in ours.lines if "mimics joint 'ghost'" in line]
+    assert len(warnings) == 1, ours.lines
+    assert ours.process.poll() is None
