@@ -541,7 +541,8 @@ class _TabTolerantScanner(yaml.reader.Reader, yaml.scanner.Scanner):
 
     PyYAML refuses every tab there; libyaml (rcl's parser) takes blanks of either kind and
     refuses only a tab left of the scalar's indentation. A URDF given with ``-p`` is one plain
-    scalar, and real URDFs have tab-indented lines (panda.urdf).
+    scalar, and real URDFs have tab-indented lines (panda.urdf). Between tokens, a tab is a
+    blank inside flow collections and after a key or value, as in libyaml.
     """
 
     def scan_plain_spaces(self, indent: int, start_mark: yaml.Mark) -> list[str] | None:
@@ -577,6 +578,23 @@ class _TabTolerantScanner(yaml.reader.Reader, yaml.scanner.Scanner):
         if first_break != '\n':
             return [first_break, *breaks]
         return breaks or [' ']
+
+    def scan_to_next_token(self) -> None:
+        """Skip blanks, comments and breaks; a tab counts as a blank where libyaml counts it."""
+        if self.index == 0 and self.peek() == '\ufeff':
+            self.forward()
+        while True:
+            while self.peek() == ' ' or (
+                self.peek() == '\t' and (self.flow_level or not self.allow_simple_key)
+            ):
+                self.forward()
+            if self.peek() == '#':
+                while self.peek() not in '\0' + _BREAKS:
+                    self.forward()
+            if not self._line_break():
+                return
+            if not self.flow_level:
+                self.allow_simple_key = True
 
     def _line_break(self) -> str:
         return str(self.scan_line_break())  # type: ignore[no-untyped-call]
