@@ -73,10 +73,11 @@ def _nesting_error(what: str, limit: int, names: Sequence[str]) -> Exception:
     import xacro
 
     shown = [*names[:3], '...', *names[-2:]] if len(names) > 6 else list(names)
-    return xacro.XacroException(
+    error: Exception = xacro.XacroException(
         f'{what} nested deeper than {limit} ({" -> ".join(shown)}): does a macro call itself, '
         'or a file include itself?'
     )
+    return error
 
 
 @contextlib.contextmanager
