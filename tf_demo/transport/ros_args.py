@@ -18,8 +18,11 @@ The ``--ros-args`` command line, parsed as rcl parses it (``rcl/src/rcl/argument
 Arguments between ``--ros-args`` and ``--`` (or the end) are ROS arguments; everything else is
 returned unchanged as the user's arguments. Understood inside a ``--ros-args`` section:
 
-* ``-p``/``--param [node:]name:=value``: a parameter override; the value is YAML-typed
-  (``true`` is a bool, ``1`` an int, ``1.0`` a double, ``[1, 2]`` an int array, ``'1'`` a string).
+* ``-p``/``--param [node:]name:=value``: a parameter override, typed by rcl's own YAML rules
+  (``rcl_yaml_param_parser``, see :func:`rcl_scalar`): ``true``/``y``/``on`` are bools, what
+  ``strtoll`` reads whole an int (``0x1F``, ``010``), what ``strtod`` reads whole a double
+  (``1e3``, ``inf``, ``nan``), anything else or quoted a string (``1_000``, ``0b11``, ``'1'``);
+  ``[1, 2]`` is an int array.
 * ``--params-file file.yaml``: rcl's schema, ``<node key>: {ros__parameters: {...}}`` where the
   key is ``/**``, a node name, a fully qualified name or a wildcard pattern (``*`` one token,
   ``**`` any number of tokens); nested mappings above ``ros__parameters`` are namespaces and
@@ -29,7 +32,11 @@ returned unchanged as the user's arguments. Understood inside a ``--ros-args`` s
   ``--enable-``/``--disable-`` ``stdout-logs``/``rosout-logs``/``external-lib-logs`` flags.
 
 Later sources of a parameter override earlier ones, in command-line order, as rcl merges them.
-Errors raise :class:`RosArgsError` with rcl's texts; ``run_node`` prints them on one line.
+YAML is read as events (libyaml, as rcl; else a pure scanner that takes tabs as libyaml does),
+never constructed: aliases are refused as rcl refuses them and nesting deeper than
+:data:`MAX_YAML_NESTING` is refused. Errors raise :class:`RosArgsError` with rcl's texts (a long
+value shortened, advice for a URDF given with ``-p``); ``run_node`` prints them on one line.
+In the rclpy world rcl parses the arguments itself (:func:`explain_rcl_error` words its refusal).
 """
 
 from __future__ import annotations
@@ -53,11 +60,15 @@ from tf_demo.transport.parameters import Parameter
 import yaml
 
 __all__ = [
+    'LIBYAML_AVAILABLE',
+    'MAX_YAML_NESTING',
     'ROS_ARGS_FLAG',
     'ROS_ARGS_USAGE',
+    'YAML_EVENT_LOADER',
     'NodeArguments',
     'ParamRule',
     'ParamsFile',
+    'PureYamlEventLoader',
     'RemapRule',
     'RosArgs',
     'RosArgsError',
@@ -66,6 +77,7 @@ __all__ = [
     'global_ros_args',
     'parse_param_value',
     'parse_ros_args',
+    'rcl_scalar',
     'remove_ros_args',
     'resolve_node_arguments',
     'set_global_ros_args',
