@@ -342,8 +342,7 @@ def _wrap(flag: str, value: str, what: str, parse: Any) -> Any:
     try:
         return parse(value)
     except _RuleError as error:
-        shown = value if len(value) <= 200 and '\n' not in value else _shorten(value)
-        msg = f"Couldn't parse {what}: '{flag} {shown}'. Error: {error}"
+        msg = f"Couldn't parse {what}: '{flag} {_shown(value)}'. Error: {error}"
         raise RosArgsError(msg) from None
 
 
@@ -721,6 +720,11 @@ def _shorten(text: str, limit: int = 60) -> str:
     return f'{start}... ({len(text)} characters)'
 
 
+def _shown(argument: str) -> str:
+    """Return an argument as an error quotes it: whole, unless multi-line or very long."""
+    return argument if len(argument) <= 200 and '\n' not in argument else _shorten(argument)
+
+
 _RCL_SOURCE_LOCATION = re.compile(r'\s*, at \S+\.(?:c|cpp):\d+')
 _RCL_INIT_PREFIX = 'failed to initialize rcl: '
 
@@ -731,7 +735,9 @@ def explain_rcl_error(message: str, argv: Sequence[str]) -> str:
 
     rcl's own message (from ``rclpy.init``) echoes the whole rule, a whole URDF for
     ``-p robot_description:=...``, and ends with C source locations: the rule is shortened,
-    the locations dropped and, for a value rcl could not read as YAML, advice added.
+    the locations dropped and, for a value rcl could not read as YAML, advice added. For a
+    params file rcl refused, our own reading's reason is added where it has one (rcl says
+    "Error parsing a event near line 0" for a file that is not UTF-8); rcl's verdict stands.
     """
     text = _RCL_SOURCE_LOCATION.sub('', message.removeprefix(_RCL_INIT_PREFIX))
     advice = ''
@@ -739,10 +745,15 @@ def explain_rcl_error(message: str, argv: Sequence[str]) -> str:
         quoted = f"'{flag} {rule}'"
         if quoted not in text:
             continue
-        text = text.replace(quoted, f"'{flag} {_shorten(rule)}'")
+        text = text.replace(quoted, f"'{flag} {_shown(rule)}'")
         if flag in _PARAM_FLAGS and ':=' in rule:
             name, _, value = rule.partition(':=')
             advice = _param_value_advice(name.rpartition(':')[2], value)
+        elif flag == _PARAMS_FILE_FLAG:
+            try:
+                _parse_params_file(rule)
+            except _RuleError as error:
+                advice = f'here: {error}'
         break
     text = ' '.join(text.split())
     return f'{text}; {advice}' if advice else text
