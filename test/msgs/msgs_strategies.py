@@ -72,3 +72,36 @@ def message_strategy(msgtype: str) -> st.SearchStrategy[Any]:
     spec = spec_for(msgtype)
     cls = message_class(spec.msgtype)
     return st.builds(cls, **{field.name: _field(field) for field in spec.fields})
+
+
+def _sample_element(field: FieldSpec, index: int) -> Any:
+    """Return a deterministic element of ``field`` (the ``index``-th of its sequence)."""
+    if field.is_nested:
+        return filled_message(field.base)
+    if field.base == 'string':
+        return 'frame_' + 'x' * index
+    if field.base == 'bool':
+        return bool(index % 2)
+    if field.base == 'byte':
+        return bytes([index])
+    if field.base in ('float32', 'float64'):
+        return 0.5 + index
+    return index + 1
+
+
+def filled_message(msgtype: str) -> Any:
+    """Return a fixed message: every string set, every sequence of 2 (or of its bound)."""
+    spec = spec_for(msgtype)
+    values: dict[str, Any] = {}
+    for field in spec.fields:
+        if field.kind == 'single':
+            values[field.name] = _sample_element(field, 1)
+            continue
+        count = field.size if field.kind == 'array' else min(2, field.size or 2)
+        items = [_sample_element(field, index) for index in range(count)]
+        prim = PRIMITIVES.get(field.base)
+        if field.kind == 'array' and prim is not None and prim.numpy_dtype:
+            values[field.name] = numpy.array(items, dtype=prim.numpy_dtype)
+        else:
+            values[field.name] = items
+    return message_class(spec.msgtype)(**values)
