@@ -373,3 +373,26 @@ def test_pre_and_post_set_callbacks(node: Any) -> None:
     assert seen == [['width', 'area']]
     node.declare_parameter('depth', 2)
     assert seen[-1] == ['depth']  # declaring runs post-set callbacks too
+
+
+@pytest.mark.parametrize(
+    ('value', 'field'),
+    [
+        ('camera_link', 'string_value'),
+        (3, 'integer_value'),
+        (0.5, 'double_value'),
+        (True, 'bool_value'),
+        ([1.0, 2.0], 'double_array_value'),
+        (['a', 'b'], 'string_array_value'),
+    ],
+)
+def test_parameter_value_messages_as_rclpy_gives_them(value: object, field: str) -> None:
+    """``get_parameter_value().string_value`` and the message round trip (course code uses it)."""
+    parameter = Parameter('p', value=value)
+    message = parameter.get_parameter_value()
+    got = getattr(message, field)
+    assert (list(got) if isinstance(value, list) else got) == value
+    assert message.type == parameter.type_.value
+    back = Parameter.from_parameter_msg(parameter.to_parameter_msg())
+    back_value = list(back.value) if isinstance(value, list) else back.value  # rclpy: array
+    assert (back.name, back.type_, back_value) == ('p', parameter.type_, value)

@@ -27,6 +27,7 @@ import stat
 
 #: Default size limit for a text file the package reads (URDF, params, snapshot, transforms).
 MAX_TEXT_FILE_BYTES = 16 * 1024 * 1024
+_CHUNK_BYTES = 64 * 1024
 
 
 class InputFileError(ValueError):
@@ -56,8 +57,7 @@ def read_bytes_file(path: str | os.PathLike[str], max_bytes: int = MAX_TEXT_FILE
                 f'{source}: file is larger than {max_bytes} bytes ({status.st_size})'
             )
         os.set_blocking(descriptor, True)
-        with os.fdopen(descriptor, 'rb', closefd=False) as handle:
-            data = handle.read(max_bytes + 1)
+        data = _read_at_most(descriptor, max_bytes + 1)
     except OSError as error:
         raise InputFileError(f'{source}: cannot read ({error.strerror})') from None
     finally:
@@ -65,6 +65,19 @@ def read_bytes_file(path: str | os.PathLike[str], max_bytes: int = MAX_TEXT_FILE
     if len(data) > max_bytes:  # grew while being read
         raise InputFileError(f'{source}: file is larger than {max_bytes} bytes')
     return data
+
+
+def _read_at_most(descriptor: int, limit: int) -> bytes:
+    """Read up to ``limit`` bytes in chunks (no ``limit``-sized buffer for a small file)."""
+    chunks: list[bytes] = []
+    total = 0
+    while total < limit:
+        chunk = os.read(descriptor, min(_CHUNK_BYTES, limit - total))
+        if not chunk:
+            break
+        chunks.append(chunk)
+        total += len(chunk)
+    return b''.join(chunks)
 
 
 def decode_utf8(data: bytes, source: str) -> str:

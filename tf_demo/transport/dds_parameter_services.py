@@ -34,6 +34,9 @@ import weakref
 from tf_demo.msgs import rcl_interfaces
 from tf_demo.transport import dds_wire
 from tf_demo.transport.parameters import Parameter
+from tf_demo.transport.parameters import parameter_from_msg
+from tf_demo.transport.parameters import parameter_to_msg
+from tf_demo.transport.parameters import parameter_value_to_msg
 from tf_demo.transport.parameters import ParameterDescriptor
 from tf_demo.transport.parameters import ParameterException
 from tf_demo.transport.parameters import ParameterNotDeclaredException
@@ -53,53 +56,8 @@ __all__ = [
     'parameter_value_to_msg',
 ]
 
-#: ParameterValue field of each parameter type.
-_VALUE_FIELDS = {
-    ParameterType.BOOL: 'bool_value',
-    ParameterType.INTEGER: 'integer_value',
-    ParameterType.DOUBLE: 'double_value',
-    ParameterType.STRING: 'string_value',
-    ParameterType.BYTE_ARRAY: 'byte_array_value',
-    ParameterType.BOOL_ARRAY: 'bool_array_value',
-    ParameterType.INTEGER_ARRAY: 'integer_array_value',
-    ParameterType.DOUBLE_ARRAY: 'double_array_value',
-    ParameterType.STRING_ARRAY: 'string_array_value',
-}
 _SEPARATOR = '.'
 _DEPTH_RECURSIVE = 0
-
-
-def parameter_value_to_msg(parameter: Parameter) -> Any:
-    """Return the ``ParameterValue`` message of ``parameter`` (rclpy's get_parameter_value)."""
-    message = rcl_interfaces.ParameterValue(type=parameter.type_.value)
-    field = _VALUE_FIELDS.get(parameter.type_)
-    if field is not None:
-        value = parameter.value
-        if parameter.type_ in (ParameterType.INTEGER_ARRAY, ParameterType.DOUBLE_ARRAY):
-            value = array('q' if parameter.type_ is ParameterType.INTEGER_ARRAY else 'd', value)
-        elif isinstance(value, tuple | array):
-            value = list(value)
-        setattr(message, field, value)
-    return message
-
-
-def parameter_to_msg(parameter: Parameter) -> Any:
-    """Return the ``rcl_interfaces/msg/Parameter`` of ``parameter``."""
-    return rcl_interfaces.Parameter(name=parameter.name, value=parameter_value_to_msg(parameter))
-
-
-def parameter_from_msg(message: Any) -> Parameter:
-    """
-    Return the parameter a ``rcl_interfaces/msg/Parameter`` carries (rclpy's from_parameter_msg).
-
-    :raises ValueError: for an unknown type or a value the type cannot hold.
-    """
-    type_ = ParameterType(int(message.value.type))
-    field = _VALUE_FIELDS.get(type_)
-    value = None if field is None else getattr(message.value, field)
-    if isinstance(value, array):
-        value = value.tolist()
-    return Parameter(message.name, type_, value)
 
 
 def descriptor_to_msg(name: str, descriptor: ParameterDescriptor) -> Any:

@@ -39,6 +39,7 @@ import threading
 from typing import Any
 import warnings
 
+from tf_demo.msgs import rcl_interfaces
 from tf_demo.transport.backend import rclpy_world
 
 __all__ = [
@@ -181,8 +182,70 @@ class Parameter:
         """The parameter's value (``None`` when NOT_SET)."""
         return self._value
 
+    def get_parameter_value(self) -> Any:
+        """Return the value as an ``rcl_interfaces/msg/ParameterValue`` (``.string_value``...)."""
+        return parameter_value_to_msg(self)
+
+    def to_parameter_msg(self) -> Any:
+        """Return the ``rcl_interfaces/msg/Parameter`` of this parameter."""
+        return parameter_to_msg(self)
+
+    @classmethod
+    def from_parameter_msg(cls, param_msg: Any) -> Parameter:
+        """Return the parameter a ``rcl_interfaces/msg/Parameter`` carries."""
+        return parameter_from_msg(param_msg)
+
     def __repr__(self) -> str:
         return f'Parameter(name={self._name!r}, type_={self._type}, value={self._value!r})'
+
+
+#: ParameterValue field of each parameter type.
+_VALUE_FIELDS = {
+    ParameterType.BOOL: 'bool_value',
+    ParameterType.INTEGER: 'integer_value',
+    ParameterType.DOUBLE: 'double_value',
+    ParameterType.STRING: 'string_value',
+    ParameterType.BYTE_ARRAY: 'byte_array_value',
+    ParameterType.BOOL_ARRAY: 'bool_array_value',
+    ParameterType.INTEGER_ARRAY: 'integer_array_value',
+    ParameterType.DOUBLE_ARRAY: 'double_array_value',
+    ParameterType.STRING_ARRAY: 'string_array_value',
+}
+
+
+def parameter_value_to_msg(parameter: Parameter) -> Any:
+    """Return the ``ParameterValue`` message of ``parameter`` (rclpy's get_parameter_value)."""
+    message = rcl_interfaces.ParameterValue(type=parameter.type_.value)
+    field = _VALUE_FIELDS.get(parameter.type_)
+    if field is not None:
+        value = parameter.value
+        if parameter.type_ in (ParameterType.INTEGER_ARRAY, ParameterType.DOUBLE_ARRAY):
+            value = array.array(
+                'q' if parameter.type_ is ParameterType.INTEGER_ARRAY else 'd', value
+            )
+        elif isinstance(value, tuple | array.array):
+            value = list(value)
+        setattr(message, field, value)
+    return message
+
+
+def parameter_to_msg(parameter: Parameter) -> Any:
+    """Return the ``rcl_interfaces/msg/Parameter`` of ``parameter``."""
+    return rcl_interfaces.Parameter(name=parameter.name, value=parameter_value_to_msg(parameter))
+
+
+def parameter_from_msg(message: Any) -> Parameter:
+    """
+    Return the parameter a ``rcl_interfaces/msg/Parameter`` carries (rclpy's from_parameter_msg).
+
+    :raises ValueError: for an unknown type or a value the type cannot hold.
+    """
+    type_ = ParameterType(int(message.value.type))
+    field = _VALUE_FIELDS.get(type_)
+    value = None if field is None else getattr(message.value, field)
+    if isinstance(value, array.array):
+        value = value.tolist()
+    return Parameter(message.name, type_, value)
 
 
 @dataclass
