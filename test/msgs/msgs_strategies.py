@@ -28,7 +28,7 @@ from tf_demo.msgs._schema import spec_for
 _INT_BITS = {'int8': 8, 'int16': 16, 'int32': 32, 'int64': 64}
 # ROS strings are NUL-terminated C strings of UTF-8: no NUL inside, no lone surrogates.
 TEXT = st.text(
-    st.characters(blacklist_categories=('Cs',), blacklist_characters='\x00'), max_size=40
+    st.characters(blacklist_categories=['Cs'], blacklist_characters='\x00'), max_size=40
 )
 
 
