@@ -203,3 +203,26 @@ def test_rviz_config_shows_tf_with_fixed_frame_odom() -> None:
     manager = config['Visualization Manager']
     assert manager['Global Options']['Fixed Frame'] == 'odom'
     assert 'rviz_default_plugins/TF' in [d['Class'] for d in manager['Displays']]
+
+
+@pytest.mark.parametrize(
+    ('translation', 'shown'),
+    [
+        (f'[{"9" * 400}, 0, 0]', '<an integer of about 40'),
+        (f'[1, {"9" * 5000}, 0]', 'a value cannot be converted (Exceeds the limit (4300 digits)'),
+        ('[1.0e+400, 0, 0]', 'inf'),
+        ('[.nan, 0, 0]', 'nan'),
+    ],
+)
+def test_a_transforms_file_with_a_huge_or_non_finite_number_is_one_line(
+    translation: str, shown: str
+) -> None:
+    """A 400-digit integer in a translation is refused like inf: the entry named, no traceback."""
+    text = f'transforms: [{{parent: a, child: b, translation: {translation}}}]\n'
+    with pytest.raises(NodeConfigError) as caught:
+        specs_from_yaml(text, 'huge.yaml')
+    message = str(caught.value)
+    assert message.startswith('huge.yaml:'), message
+    assert shown in message
+    assert len(message) < 400
+    assert '\n' not in message

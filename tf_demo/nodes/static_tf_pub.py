@@ -119,6 +119,11 @@ def specs_from_yaml(text: str, source: str = '<yaml>') -> list[StaticTransformSp
         line = f' line {mark.line + 1}' if mark is not None else ''
         msg = f'{source}:{line} is not valid YAML ({getattr(error, "problem", error)})'
         raise NodeConfigError(msg) from None
+    except (ValueError, OverflowError) as error:
+        # A scalar YAML types but Python cannot build: a 5,000-digit integer, a 13th month.
+        reason = str(error).split(':', 1)[0]
+        msg = f'{source}: a value cannot be converted ({reason})'
+        raise NodeConfigError(msg) from None
     if not isinstance(document, dict) or not isinstance(document.get('transforms'), list):
         msg = f"{source}: expected a mapping with a 'transforms' list"
         raise NodeConfigError(msg)

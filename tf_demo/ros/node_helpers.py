@@ -76,20 +76,29 @@ def require_distinct_frames(parent_frame: str, child_frame: str) -> None:
 def as_float(name: str, value: Any) -> float:
     """Return ``value`` as a finite float, or raise a one-line error naming ``name``."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        msg = f'parameter {name!r} must be a number, got {value!r}'
+        msg = f'parameter {name!r} must be a number, got {_show(value)}'
         raise NodeConfigError(msg)
-    number = float(value)
-    if not math.isfinite(number):
-        msg = f'parameter {name!r} must be finite, got {value!r}'
+    number = _finite_float(value)
+    if number is None:
+        msg = f'parameter {name!r} must be finite, got {_show(value)}'
         raise NodeConfigError(msg)
     return number
+
+
+def _finite_float(value: float) -> float | None:
+    """``value`` as a float, or None when it is not finite or too large for a double."""
+    try:
+        number = float(value)
+    except OverflowError:  # an int of hundreds of digits
+        return None
+    return number if math.isfinite(number) else None
 
 
 def as_positive_float(name: str, value: Any) -> float:
     """Return ``value`` as a float > 0, or raise a one-line error naming ``name``."""
     number = as_float(name, value)
     if number <= 0.0:
-        msg = f'parameter {name!r} must be > 0, got {value!r}'
+        msg = f'parameter {name!r} must be > 0, got {_show(value)}'
         raise NodeConfigError(msg)
     return number
 
@@ -147,17 +156,35 @@ def _number_list(name: str, value: Any) -> list[float]:
         if isinstance(item, bool) or not isinstance(item, (int, float)):
             msg = f'{name} must be a list of numbers, got {_show(value)}'
             raise NodeConfigError(msg)
-        if not math.isfinite(float(item)):
+        number = _finite_float(item)
+        if number is None:
             msg = f'{name} must contain finite numbers, got {_show(value)}'
             raise NodeConfigError(msg)
-        numbers.append(float(item))
+        numbers.append(number)
     return numbers
 
 
+MAX_SHOWN_CHARS = 200
+"""A value quoted in an error is cut to this many characters."""
+_HUGE_INT_BITS = 256
+
+
+def _show_one(value: Any) -> str:
+    """``repr`` of one value; an integer too long to print usefully is described instead."""
+    if isinstance(value, int) and value.bit_length() > _HUGE_INT_BITS:
+        return f'<an integer of about {int(value.bit_length() * math.log10(2)) + 1} digits>'
+    return repr(value)
+
+
 def _show(value: Any) -> str:
+    """``repr`` of a parameter value for an error, huge integers described, cut to a length."""
     if hasattr(value, 'tolist'):
         value = value.tolist()
-    return repr(list(value)) if isinstance(value, tuple) else repr(value)
+    if isinstance(value, (list, tuple)):
+        text = '[' + ', '.join(_show_one(item) for item in value) + ']'
+    else:
+        text = _show_one(value)
+    return text if len(text) <= MAX_SHOWN_CHARS else text[: MAX_SHOWN_CHARS - 3] + '...'
 
 
 def make_transform_stamped(
