@@ -78,11 +78,25 @@ def wait_for_line(process: subprocess.Popen[str], text: str) -> None:
     pytest.fail(f'process ended before printing {text!r}')
 
 
-@pytest.mark.parametrize('signum', [signal.SIGINT, signal.SIGTERM])
+@pytest.mark.parametrize(
+    'signals',
+    [
+        (signal.SIGINT,),
+        (signal.SIGTERM,),
+        (signal.SIGINT, signal.SIGINT),
+        (signal.SIGTERM, signal.SIGINT),
+    ],
+    ids=['SIGINT', 'SIGTERM', 'double-SIGINT', 'SIGTERM-then-SIGINT'],
+)
 def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
-    world_env: dict[str, str], tmp_path: Path, signum: signal.Signals
+    world_env: dict[str, str], tmp_path: Path, signals: tuple[signal.Signals, ...]
 ) -> None:
-    """After SIGINT or SIGTERM the node exits 0 without traceback and its last sample arrives."""
+    """
+    After SIGINT or SIGTERM the node exits 0 without traceback and its last sample arrives.
+
+    A second signal a moment later (a double Ctrl-C) is ignored while the node shuts down: the
+    node is still destroyed (it prints its last count) and its last sample still arrives.
+    """
     transport.init(['test'])
     received: list[int] = []
     try:
@@ -102,7 +116,11 @@ def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
             while len(received) < 20 and time.monotonic() < deadline:
                 executor.spin_once(timeout_sec=0.1)
             assert received, 'no sample from the counter node'
-            process.send_signal(signum)
+            for index, signum in enumerate(signals):
+                if index:
+                    time.sleep(0.02)  # the second one lands while the first's shutdown runs
+                if process.poll() is None:
+                    process.send_signal(signum)
             stdout, stderr = process.communicate(timeout=20)
         finally:
             if process.poll() is None:

@@ -205,25 +205,35 @@ def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int
     """
     Run ``body`` between ``transport.init`` and ``transport.shutdown``.
 
-    Ctrl-C and SIGTERM end the tool with exit code 0 (as a stopped ROS 2 tool), a
+    Ctrl-C and SIGTERM end the tool with exit code 0 (as a stopped ROS 2 tool): the first one
+    interrupts ``body`` (``KeyboardInterrupt``), later ones are ignored while the tool cleans up
+    (:class:`tf_demo.transport.StopRequest`), so a double Ctrl-C cannot skip the clean-up. A
     :class:`ToolError` prints one line and gives 1.
     """
-    import signal
+    from tf_demo import transport
 
+    # Installed before init: rclpy.init puts its own handlers on top, which call these and
+    # then wake the executors (a blocked transport.spin() would not wake otherwise).
+    stop = transport.StopRequest(interrupt=True)
+    stop.install()
+    try:
+        return _run_tool_installed(tool, ros_args, body, stop)
+    except KeyboardInterrupt:  # the stop arrived before or after body (init, shutdown)
+        return 0
+    finally:
+        stop.restore()
+
+
+def _run_tool_installed(
+    tool: str, ros_args: Sequence[str], body: Callable[[], int], stop: Any
+) -> int:
+    """:func:`run_tool` with its signal handlers in place."""
     from tf_demo import transport
     from tf_demo.transport.ros_args import ROS_ARGS_USAGE
 
-    def terminate(signum: int, frame: object) -> None:
-        del signum, frame
-        raise KeyboardInterrupt
-
-    # Installed before init: rclpy.init puts its own SIGTERM handler on top, which calls this
-    # one and then wakes the executors (a blocked transport.spin() would not wake otherwise).
-    previous = signal.signal(signal.SIGTERM, terminate)
     try:
         transport.init(args=[tool, *ros_args])
     except (transport.RosArgsError, transport.BackendError) as error:
-        signal.signal(signal.SIGTERM, previous)
         print(ROS_ARGS_USAGE.replace('<executable>', tool), file=sys.stderr)
         print_error(tool, str(error))
         return 1
@@ -240,10 +250,15 @@ def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int
     except ToolError as error:
         print_error(tool, str(error))
         return 1
+    except Exception:
+        # Under rclpy its signal thread shuts the context down from under the tool: whatever
+        # rclpy raises then (ExternalShutdownException, RCLError) is the stop, not a failure.
+        if stop.event.is_set():
+            return 0
+        raise
     finally:
         try:
             if transport.ok():
                 transport.shutdown()
-        except (Exception, KeyboardInterrupt):  # a second stop request during clean-up
-            pass
-        signal.signal(signal.SIGTERM, previous)
+        except Exception as error:  # a failed clean-up must not become a traceback
+            print_error(tool, f'clean shutdown failed: {error}')

@@ -192,16 +192,19 @@ def demo_nodes(robot: bool) -> list[tuple[str, list[str]]]:
     ]
 
 
-def start_children(options: argparse.Namespace) -> list[Child]:
-    """Start the demo nodes and tf_echo (same environment, so the same ROS_DOMAIN_ID)."""
-    children = [
-        start_child(name, child_command(f'tf_demo.nodes.{name}', *args), options.quiet)
-        for name, args in demo_nodes(options.robot)
-    ]
+def start_children(options: argparse.Namespace, children: list[Child]) -> None:
+    """
+    Start the demo nodes and tf_echo (same environment, so the same ROS_DOMAIN_ID).
+
+    Each child is appended to ``children`` as soon as it runs, so a Ctrl-C in the middle still
+    leaves every started child to :func:`stop_children`.
+    """
+    for name, args in demo_nodes(options.robot):
+        command = child_command(f'tf_demo.nodes.{name}', *args)
+        children.append(start_child(name, command, options.quiet))
     if not options.no_echo:
         command = child_command(f'tf_demo.cli.{ECHO_TOOL}', options.target, options.source)
         children.append(start_child(ECHO_TOOL, command, options.quiet))
-    return children
 
 
 def stop_children(children: list[Child]) -> list[int]:
@@ -229,24 +232,36 @@ def _dead_child(children: list[Child]) -> str | None:
     return None
 
 
-def _interrupt(_signum: int, _frame: object) -> None:
-    raise KeyboardInterrupt
-
-
 def run(options: argparse.Namespace, ros_args: list[str]) -> int:
     """Start the children, print transforms until the deadline or Ctrl-C, stop everything."""
+    from tf_demo import transport
+
+    # Ctrl-C or SIGTERM interrupts the loop below; a second one is ignored while the children
+    # are stopped (they run in their own sessions: an interrupted clean-up would orphan them).
+    stop = transport.StopRequest(interrupt=True)
+    stop.install()
+    try:
+        return _run_installed(options, ros_args)
+    except KeyboardInterrupt:
+        return 0
+    finally:
+        stop.restore()
+
+
+def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
+    """:func:`run` with its signal handlers in place."""
     from tf_demo import transport
     from tf_demo.ros.buffer import Buffer
     from tf_demo.ros.transform_listener import TransformListener
     from tf_demo.transport.clock import Time
 
-    if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGTERM, _interrupt)
-    children = start_children(options)
+    children: list[Child] = []
     failure: str | None = None
-    transport.init(args=['tf_demo_live', *ros_args])
-    node = transport.create_node('tf_demo_live')
+    node: Any = None
     try:
+        start_children(options, children)
+        transport.init(args=['tf_demo_live', *ros_args])
+        node = transport.create_node('tf_demo_live')
         tf_buffer = Buffer(node=node)
         listener = TransformListener(tf_buffer, node)
 
@@ -272,7 +287,8 @@ def run(options: argparse.Namespace, ros_args: list[str]) -> int:
         pass
     finally:
         stop_children(children)
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         transport.try_shutdown()
     if failure is not None:
         print(f'tf_demo_live: {failure}', file=sys.stderr)

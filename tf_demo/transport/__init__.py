@@ -51,6 +51,7 @@ __all__ = [
     'ReentrantCallbackGroup',
     'RosArgsError',
     'SingleThreadedExecutor',
+    'StopRequest',
     'backend_module',
     'backend_name',
     'create_node',
@@ -166,33 +167,52 @@ def _config_error_types() -> tuple[type[BaseException], ...]:
     return (ValueError, OSError, ParameterException)
 
 
-class _StopRequest:
+class StopRequest:
     """
-    Set by SIGINT/SIGTERM; a second SIGINT interrupts at once (KeyboardInterrupt).
+    SIGINT/SIGTERM for an executable's ``main``: the first signal asks to stop, later ones wait.
+
+    The first signal sets :attr:`event` (and with ``interrupt=True`` also raises
+    ``KeyboardInterrupt`` in the main thread, for tools that block in a loop of their own). While
+    the shutdown is under way every further SIGINT or SIGTERM is ignored, as rclpy's own C
+    handler does (it only requests the same shutdown again), so a quick double Ctrl-C cannot cut
+    the clean-up short: nodes are destroyed and publishers flush.
 
     Installed *before* the backend's ``init``: ``rclpy.init`` then puts its own C handlers on
     top and chains to these (rclpy's ``signal_handler.cpp`` calls the previous handler, then
     triggers the guard conditions that wake every executor), so a stop request wakes the
-    executor at once. Removed after ``shutdown`` (rclpy uninstalls its handlers there).
+    executor at once. :meth:`restore` puts the previous handlers back, except after a stop
+    request: the process is then on its way out and both signals stay ignored, because Python's
+    finalisation resets a Python-level SIGINT handler to ``SIG_DFL`` and a late Ctrl-C there
+    would kill the process (exit -2) before the middleware has finished.
     """
 
-    def __init__(self) -> None:
+    def __init__(self, *, interrupt: bool = False) -> None:
         self.event = threading.Event()
+        self.interrupt = interrupt
         self.previous: dict[int, Any] = {}
 
     def handle(self, signum: int, _frame: FrameType | None) -> None:
-        if self.event.is_set() and signum == signal.SIGINT:
-            raise KeyboardInterrupt
+        """Signal handler: the first call requests the stop, later calls are ignored."""
+        del signum
+        if self.event.is_set():
+            return
         self.event.set()
+        if self.interrupt:
+            raise KeyboardInterrupt
 
     def install(self) -> None:
+        """Install :meth:`handle` for SIGINT and SIGTERM (main thread only, else a no-op)."""
         if threading.current_thread() is not threading.main_thread():
             return
         for signum in (signal.SIGINT, signal.SIGTERM):
             self.previous[signum] = signal.signal(signum, self.handle)
 
     def restore(self) -> None:
+        """Put the previous handlers back; after a stop request, ignore both signals."""
         for signum, previous in self.previous.items():
+            if self.event.is_set():
+                signal.signal(signum, signal.SIG_IGN)
+                continue
             # None: the previous handler was installed from C; use Python's default.
             default = signal.default_int_handler if signum == signal.SIGINT else signal.SIG_DFL
             signal.signal(signum, default if previous is None else previous)
@@ -207,12 +227,13 @@ def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> i
     backend, builds the node with ``factory()`` (a ``ValueError``, ``OSError`` or parameter
     error from it — e.g. :class:`NodeConfigError` — prints one line and exits 1), spins until
     Ctrl-C or SIGTERM, then destroys the node (its publishers flush) and shuts down: exit 0,
-    no traceback. Under rclpy the context being shut down elsewhere
-    (``ExternalShutdownException``) also ends the loop with exit 0.
+    no traceback; further Ctrl-Cs are ignored while it shuts down (:class:`StopRequest`).
+    Under rclpy the context being shut down elsewhere (``ExternalShutdownException``) also ends
+    the loop with exit 0.
     """
     argv = list(sys.argv if args is None else args)
     program = _program_name(argv)
-    stop = _StopRequest()
+    stop = StopRequest()
     stop.install()
     try:
         return _run_installed(factory, argv, program, stop)
@@ -221,7 +242,7 @@ def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> i
 
 
 def _run_installed(
-    factory: Callable[[], Any], argv: list[str], program: str, stop: _StopRequest
+    factory: Callable[[], Any], argv: list[str], program: str, stop: StopRequest
 ) -> int:
     """Initialise, build, spin and finish one node (:func:`run_node` with its handlers set)."""
     try:
@@ -271,7 +292,8 @@ def _finish(executor: Any, node: Any) -> None:
     """
     Shut the executor down, destroy the node (flushing its publishers) and the backend, quietly.
 
-    A Ctrl-C while this runs skips the rest of the clean-up instead of printing a traceback.
+    Stop signals are ignored while this runs (:class:`StopRequest`); a ``KeyboardInterrupt``
+    from elsewhere skips the rest of the clean-up instead of printing a traceback.
     """
     try:
         try:
