@@ -14,14 +14,20 @@
 
 """Tests of the pure argument parsers (tf2_echo and static_transform_publisher rules)."""
 
+import argparse
 import math
 
 import pytest
+from tf_demo.cli._args import c_float_range_error
+from tf_demo.cli._args import count_argument
 from tf_demo.cli._args import OLD_STYLE_WARNING
 from tf_demo.cli._args import parse_c_float
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._args import parse_static_transform_args
+from tf_demo.cli._args import rate_error
 from tf_demo.cli._args import split_ros_args
+from tf_demo.cli._args import wait_time_error
+from tf_demo.cli._args import whole_number
 from tf_demo.core.math3d import quat_from_rpy
 
 
@@ -118,7 +124,24 @@ def test_static_old_style_nine_is_quaternion():
         (['1', '2', '3', '0', '0', 'q', '1', 'a', 'b'], 'Failed to parse qz argument as float'),
         (
             ['--y', '1e999', '--frame-id', 'a', '--child-frame-id', 'b'],
-            'Failed to parse --y argument as float',
+            'Failed to parse --y argument as float: out of range (too large)',
+        ),
+        # Issue 10: a 400-digit number (stod: out_of_range; upstream aborts) is one clear line.
+        (
+            ['--x', '1' * 400, '--frame-id', 'a', '--child-frame-id', 'b'],
+            'Failed to parse --x argument as float: out of range (too large)',
+        ),
+        (
+            ['--qw', '0x' + 'f' * 400, '--frame-id', 'a', '--child-frame-id', 'b'],
+            'Failed to parse --qw argument as float: out of range (too large)',
+        ),
+        (
+            ['--yaw', '1e-400', '--frame-id', 'a', '--child-frame-id', 'b'],
+            'Failed to parse --yaw argument as float: out of range (too small)',
+        ),
+        (
+            ['1', '2', '9' * 5000, '0', '0', '0', 'a', 'b'],
+            'Failed to parse z argument as float: out of range (too large)',
         ),
     ],
 )
@@ -173,3 +196,82 @@ def test_echo_extras():
     assert parse_echo_args(['a', 'b', '--limit', '0']).exit_code == 2
     assert parse_echo_args(['a', 'b', '-p']).exit_code == 2
     assert parse_echo_args(['a', 'b', '-p', 'x']).exit_code == 2
+
+
+def test_static_zero_and_infinity_spelled_out_are_in_range():
+    """A literal zero however written, and a spelled inf, are not range errors (stod agrees)."""
+    for text in ('0', '0e-400', '0x0p-9999', '-0.0', '.0e5'):
+        assert c_float_range_error(text, parse_c_float(text)[0]) is None
+    assert c_float_range_error('inf', math.inf) is None
+    assert c_float_range_error('1e308', 1e308) is None
+    assert c_float_range_error('1e39', 1e39) is None
+    assert c_float_range_error('1e39', 1e39, single=True) == 'out of range (too large for a float)'
+    assert c_float_range_error('1e-39', 1e-39, single=True) == 'out of range (too small)'
+
+
+@pytest.mark.parametrize(
+    ('rate', 'problem'),
+    [
+        ('1e-300', 'out of range (too small)'),
+        ('1e-320', 'out of range (too small)'),
+        ('1e-39', 'out of range (too small)'),
+        ('1e39', 'out of range (too large for a float)'),
+        ('1e400', 'out of range (too large)'),
+        ('0x' + 'f' * 300, 'out of range (too large)'),
+    ],
+)
+def test_echo_rate_out_of_float_range_exits_2(rate, problem):
+    """tf2_echo's stof throws out_of_range (and aborts); we print one line and exit 2."""
+    parsed = parse_echo_args(['a', 'b', rate])
+    assert parsed.exit_code == 2
+    assert parsed.error == (
+        f"Failed to convert rate argument '{rate}' to a floating-point number: {problem}"
+    )
+
+
+def test_echo_rate_whose_period_overflows_exits_2():
+    """1e-10 Hz is a float, but its period does not fit rclcpp::Rate's int64 nanoseconds."""
+    parsed = parse_echo_args(['a', 'b', '1e-10'])
+    assert parsed.exit_code == 2
+    assert parsed.error.startswith('echo_rate is too small: the period 1/rate must be at most')
+    assert parse_echo_args(['a', 'b', '1e-9']).rate_hz == 1e-9
+    for rate in ('nan', 'inf', '-1', '0', '-0'):
+        parsed = parse_echo_args(['a', 'b', rate])
+        assert parsed.exit_code == 2
+        assert 'must be a positive finite number of Hz' in parsed.error
+
+
+def test_echo_huge_limit_and_precision():
+    """A 5,000-digit --limit is refused in one short line; any huge precision means 17."""
+    parsed = parse_echo_args(['a', 'b', '--limit', '9' * 5000])
+    assert parsed.exit_code == 2
+    assert parsed.error.startswith('--limit needs a whole number from 1 to 1000000000000000000')
+    assert len(parsed.error) < 200
+    assert parse_echo_args(['a', 'b', '--limit', '0' * 50 + '7']).limit == 7
+    assert parse_echo_args(['a', 'b', '-p', '9' * 5000]).precision == 17
+    assert parse_echo_args(['a', 'b', '-p', '١']).exit_code == 2  # not an ASCII digit
+
+
+def test_whole_numbers_and_counts():
+    """whole_number takes ASCII digits up to a maximum; count_argument is its argparse form."""
+    assert whole_number('42', 100) == 42
+    assert whole_number('101', 100) is None
+    assert whole_number('9' * 5000, 100) is None
+    assert whole_number(' 4', 100) is None
+    assert whole_number('1_0', 100) is None
+    assert count_argument('3') == 3
+    for text in ('0', '-1', '1e3', '9' * 5000, ''):
+        with pytest.raises(argparse.ArgumentTypeError):
+            count_argument(text)
+
+
+def test_wait_time_and_rate_limits():
+    """Wait times are finite and >= 0; rates are positive, finite, with an int64-ns period."""
+    assert wait_time_error(0.0) is None
+    assert wait_time_error(1e6) is None
+    for bad in (-1.0, math.nan, math.inf):
+        assert wait_time_error(bad) is not None
+    assert rate_error(1e-9) is None
+    assert rate_error(1e300) is None
+    for bad in (0.0, -1.0, math.nan, math.inf, 1e-10, 1e-300):
+        assert rate_error(bad) is not None

@@ -15,10 +15,12 @@
 """Real-process tests of the tf tools over DDS on loopback (each test on its own domain)."""
 
 import json
+import os
 from pathlib import Path
 import re
 import select
 import signal
+import stat
 import subprocess
 import sys
 import time
@@ -511,6 +513,42 @@ def test_saver_chosen_frames_and_flatten(spawn, peers, tmp_path):
     assert [(e.parent, e.child, e.translation) for e in flat.transforms] == [
         ('map', 'laser', (1.0, 2.0, 3.0))
     ]
+
+
+def test_saver_writes_through_a_link_and_refuses_a_device(spawn, peers, tmp_path):
+    """
+    -o through a symbolic link updates the file it names and keeps the link (issue 10, 7).
+
+    A device is refused before listening: exit 2, one line, the node untouched (a private
+    /dev/full-like node when root may make one, else a FIFO).
+    """
+    peers(static('map', 'odom', t=(1.0, 2.0, 0.0)))
+    (tmp_path / 'kept').mkdir()
+    (tmp_path / 'kept' / 'real.yaml').write_text('old\n', encoding='utf-8')
+    (tmp_path / 'latest.yaml').symlink_to(Path('kept') / 'real.yaml')
+    code, _, err = run(spawn, 'tf_saver', '-t', '3', '-o', 'latest.yaml')
+    assert code == 0, err
+    assert (tmp_path / 'latest.yaml').is_symlink()
+    saved = read_snapshot(tmp_path / 'kept' / 'real.yaml')
+    assert [(e.parent, e.child) for e in saved.transforms] == [('map', 'odom')]
+
+    device = tmp_path / 'device'
+    try:
+        os.mknod(device, 0o666 | stat.S_IFCHR, os.makedev(1, 7))
+        is_kind = stat.S_ISCHR
+    except PermissionError:
+        os.mkfifo(device)
+        is_kind = stat.S_ISFIFO
+    for target in (device, tmp_path / 'latest_device'):
+        if target != device:
+            target.symlink_to(device)
+        code, out, err = run(spawn, 'tf_saver', '-t', '3', '-o', str(target))
+        assert (code, out) == (2, '')
+        assert err == (
+            f'tf_saver: error: {target}: not a regular file (a device, FIFO or socket); '
+            'nothing was written\n'
+        )
+        assert is_kind(os.lstat(device).st_mode)
 
 
 def test_loader_refuses_bad_file_and_publishes_nothing(spawn, tmp_path):

@@ -95,6 +95,10 @@ def _replace(old, new):
     return GOOD.replace(old, new, 1)
 
 
+def _with_sample_count(text):
+    return GOOD + f'    sample_count: {text}\n'
+
+
 BAD_FILES = [
     ('', 'empty file'),
     ('[1, 2]\n', 'the file must be a mapping'),
@@ -142,6 +146,32 @@ BAD_FILES = [
         'anchors and aliases',
     ),
     ('tf_demo_transforms: 1\ntransform_count: 20000\ntransforms: []\n', 'more than 10000'),
+    # Issue 10: huge numbers are one clear line, not ValueError/OverflowError tracebacks.
+    (
+        _replace('[1.0, 2.0, 0.0]', '[1.0, ' + '9' * 400 + ', 0.0]'),
+        ':6: transforms[0].translation[1]: number 9999',
+    ),
+    (
+        _replace('[1.0, 2.0, 0.0]', '[1.0, ' + '9' * 400 + '.5, 0.0]'),
+        ':6: transforms[0].translation[1]: number 9999',
+    ),
+    (
+        _replace('[1.0, 2.0, 0.0]', '[0x' + 'f' * 300 + ', 2.0, 0.0]'),
+        ':6: transforms[0].translation[0]: number 0xfff',
+    ),
+    (
+        _with_sample_count('7' * 4300),
+        ':14: transforms[1].sample_count: number 7777',
+    ),
+    (
+        _with_sample_count('7' * 5000),
+        '(5000 characters) is longer than 64 characters',
+    ),
+    (_with_sample_count('1:' * 30_000 + '1'), 'sample_count: number'),
+    (_with_sample_count('9' * 30), 'sample_count must be <='),
+    (_replace('nanosec: 7', 'nanosec: ' + '9' * 50), ':13: transforms[1].stamp.nanosec must be'),
+    (_replace('tf_demo_transforms: 1', 'tf_demo_transforms: ' + '1' * 4300), ':1: tf_demo_'),
+    (_replace('child: odom', 'child: odom\n    ' + 'k' * 1000 + ': 1'), '(1002 characters)'),
 ]
 
 

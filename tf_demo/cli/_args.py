@@ -75,7 +75,9 @@ def parse_c_float(text: str) -> tuple[float, int] | None:
     Parse the longest numeric prefix of ``text`` as C's ``strtod`` does.
 
     :return: (value, characters consumed) or None when no number starts the text (leading white
-        space is skipped, as ``strtod`` does). Hex floats, ``inf`` and ``nan`` are accepted.
+        space is skipped, as ``strtod`` does). Hex floats, ``inf`` and ``nan`` are accepted; a
+        number too large for a double gives a signed infinity (``strtod``'s ``HUGE_VAL``), one
+        too small gives 0.0: :func:`c_float_range_error` tells these apart from ``inf`` and 0.
     """
     match = _C_FLOAT_PREFIX.match(text)
     if match is None:
@@ -86,7 +88,10 @@ def parse_c_float(text: str) -> tuple[float, int] | None:
     lowered = body.lower()
     if lowered.startswith('0x'):
         mantissa = lowered if 'p' in lowered else lowered + 'p0'
-        value = float.fromhex(mantissa)
+        try:
+            value = float.fromhex(mantissa)
+        except OverflowError:
+            value = math.inf
     elif lowered.startswith('inf'):
         value = math.inf
     elif lowered.startswith('nan'):
@@ -94,6 +99,53 @@ def parse_c_float(text: str) -> tuple[float, int] | None:
     else:
         value = float(body)
     return (-value if negative else value), match.end()
+
+
+FLT_MAX = 3.4028234663852886e38
+"""The largest finite C ``float`` (``std::stof`` refuses anything beyond it)."""
+FLT_MIN = 1.1754943508222875e-38
+"""The smallest normal C ``float`` (glibc's ``strtof`` reports ERANGE below it)."""
+
+
+def c_float_range_error(text: str, value: float, *, single: bool = False) -> str | None:
+    """
+    Return why ``value`` (parsed from ``text``) is out of range for ``strtod`` (or ``strtof``).
+
+    ``std::stod``/``std::stof`` throw ``std::out_of_range`` for these; the C++ tools then abort.
+    None when the value is in range. A spelled ``inf`` and a literal zero are in range.
+    """
+    if math.isnan(value):
+        return None
+    if math.isinf(value):
+        return None if _spells_infinity(text) else 'out of range (too large)'
+    magnitude = abs(value)
+    if single and magnitude > FLT_MAX:
+        return 'out of range (too large for a float)'
+    if _has_nonzero_digit(text) and (magnitude == 0.0 or (single and magnitude < FLT_MIN)):
+        return 'out of range (too small)'
+    return None
+
+
+def _has_nonzero_digit(text: str) -> bool:
+    """Whether the mantissa of the numeric literal at the start of ``text`` is not zero."""
+    match = _C_FLOAT_PREFIX.match(text)
+    if match is None:
+        return False
+    body = match.group('number').lstrip('+-').lower()
+    if body.startswith('0x'):
+        return any(c not in '0.' for c in body[2:].split('p', 1)[0])
+    return any(c in '123456789' for c in body.split('e', 1)[0])
+
+
+def whole_number(text: str, maximum: int) -> int | None:
+    """Parse ASCII digits ``text`` as an int up to ``maximum``; None if not that (no 10^4300)."""
+    if not re.fullmatch(r'[0-9]+', text):
+        return None
+    digits = text.lstrip('0') or '0'
+    if len(digits) > len(str(maximum)):
+        return None
+    value = int(digits)
+    return value if value <= maximum else None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -148,8 +200,12 @@ def parse_static_transform_args(args: list[str]) -> StaticTransformArgs:
 
     def number(name: str, text: str) -> float | None:
         parsed = parse_c_float(text)
-        if parsed is None or (math.isinf(parsed[0]) and not _spells_infinity(text)):
+        if parsed is None:
             result.error = f'Failed to parse {name} argument as float'
+            return None
+        out_of_range = c_float_range_error(text, parsed[0])
+        if out_of_range is not None:
+            result.error = f'Failed to parse {name} argument as float: {out_of_range}'
             return None
         return parsed[0]
 
@@ -251,6 +307,9 @@ class EchoArgs:
 
 
 ECHO_EXTRA_FLAGS = ('-p', '--precision', '--limit', '--json')
+MAX_PRECISION = 17
+MAX_COUNT = 10**18
+"""The largest ``--limit`` a tool takes (a count of reports or blocks)."""
 
 
 def parse_echo_args(args: list[str]) -> EchoArgs:
@@ -275,15 +334,23 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
                 return result
             index += 1
             value = args[index]
-            if not re.fullmatch(r'[0-9]+', value) or (token == '--limit' and int(value) == 0):
-                kind = 'a positive whole number' if token == '--limit' else 'a whole number'
-                result.error = f'{token} needs {kind}, got {value!r}'
-                result.exit_code = 2
-                return result
             if token == '--limit':
-                result.limit = int(value)
+                limit = whole_number(value, MAX_COUNT)
+                if limit is None or limit == 0:
+                    result.error = (
+                        f'--limit needs a whole number from 1 to {MAX_COUNT}, got {_shown(value)}'
+                    )
+                    result.exit_code = 2
+                    return result
+                result.limit = limit
             else:
-                result.precision = min(int(value), 17)
+                # More than 17 decimals add nothing to a double: any larger number means 17.
+                if not re.fullmatch(r'[0-9]+', value):
+                    result.error = f'{token} needs a whole number, got {_shown(value)}'
+                    result.exit_code = 2
+                    return result
+                precision = whole_number(value, MAX_PRECISION)
+                result.precision = MAX_PRECISION if precision is None else precision
         else:
             positional.append(token)
         index += 1
@@ -303,16 +370,51 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
         if parsed[1] != len(text):
             result.error, result.exit_code = failure, 3
             return result
-        if not parsed[0] > 0.0 or math.isinf(parsed[0]):
-            result.error = f"echo_rate must be a positive finite number of Hz, got '{text}'"
+        out_of_range = c_float_range_error(text, parsed[0], single=True)
+        if out_of_range is not None:
+            result.error, result.exit_code = f'{failure}: {out_of_range}', 2
+            return result
+        problem = rate_error(parsed[0])
+        if problem is not None:
+            result.error = f"echo_rate {problem}, got '{_shown(text)}'"
             result.exit_code = 2
             return result
         result.rate_hz = parsed[0]
     return result
 
 
-def negative_wait_time_error(wait_time: float) -> str | None:
-    """Return the error text for a ``--wait-time`` that is negative or NaN, else None."""
-    if wait_time >= 0:
+MAX_PERIOD_S = (2**63 - 1) / 1e9
+"""The longest period ``rclcpp::Rate`` can hold: int64 nanoseconds (about 292 years)."""
+MIN_RATE_HZ = 1.0 / MAX_PERIOD_S
+
+
+def rate_error(rate_hz: float) -> str | None:
+    """Why ``rate_hz`` is not a usable rate (positive, finite, period within int64 ns), or None."""
+    if not (rate_hz > 0.0 and math.isfinite(rate_hz)):
+        return 'must be a positive finite number of Hz'
+    if rate_hz < MIN_RATE_HZ:
+        return f'is too small: the period 1/rate must be at most {int(MAX_PERIOD_S)} s'
+    return None
+
+
+def count_argument(text: str) -> int:
+    """Parse a count for argparse (``type=``): a whole number from 1 to :data:`MAX_COUNT`."""
+    import argparse
+
+    value = whole_number(text, MAX_COUNT)
+    if value is None or value == 0:
+        msg = f'needs a whole number from 1 to {MAX_COUNT}, got {_shown(text)}'
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def _shown(text: str, limit: int = 40) -> str:
+    """``text`` for an error message, cut to ``limit`` characters (a 5,000-digit argument)."""
+    return text if len(text) <= limit else f'{text[:limit]}... ({len(text)} characters)'
+
+
+def wait_time_error(wait_time: float) -> str | None:
+    """Return the error text for a ``--wait-time`` that is negative, NaN or infinite, else None."""
+    if wait_time >= 0 and math.isfinite(wait_time):
         return None
-    return f'--wait-time must be >= 0, got {wait_time}'
+    return f'--wait-time must be a finite number of seconds >= 0, got {wait_time}'

@@ -52,9 +52,9 @@ from dataclasses import dataclass
 import json
 import math
 import os
-from pathlib import Path
 from typing import Any
 
+from tf_demo.cli._output import write_text_atomically
 from tf_demo.core.files import InputFileError
 from tf_demo.core.files import read_text_file
 import yaml
@@ -78,6 +78,14 @@ _ENTRY_KEYS = (
     'sample_count',
 )
 _REQUIRED_ENTRY_KEYS = ('parent', 'child', 'translation', 'rotation')
+MAX_NUMBER_CHARACTERS = 64
+MAX_INTEGER = 2**63 - 1
+_NUMBER_TAGS = ('tag:yaml.org,2002:int', 'tag:yaml.org,2002:float')
+
+
+def _cut(text: str, limit: int = 40) -> str:
+    """``text`` for an error message, cut to ``limit`` characters."""
+    return text if len(text) <= limit else f'{text[:limit]}... ({len(text)} characters)'
 
 
 class SnapshotError(ValueError):
@@ -169,11 +177,13 @@ def dump_snapshot(snapshot: Snapshot) -> str:
 
 
 def write_snapshot(path: str | os.PathLike[str], snapshot: Snapshot) -> None:
-    """Write ``snapshot`` atomically: a temporary file in the same folder, then a rename."""
-    target = Path(path)
-    temporary = target.with_name(f'.{target.name}.tmp{os.getpid()}')
-    temporary.write_text(dump_snapshot(snapshot), encoding='utf-8')
-    temporary.replace(target)
+    """
+    Write ``snapshot`` atomically over a regular file (or a new one) at ``path``.
+
+    The rules of :func:`tf_demo.cli._output.write_text_atomically`: devices, FIFOs and folders
+    are refused, a symbolic link is followed and stays a link; :class:`OutputFileError` else.
+    """
+    write_text_atomically(path, dump_snapshot(snapshot))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -208,45 +218,63 @@ class _Reader:
         result: dict[str, yaml.Node] = {}
         for key_node, value_node in node.value:
             self.visit(key_node)
-            key = self.scalar(key_node)
+            key = self.scalar(key_node, f'{what}: key')
             if not isinstance(key, str):
-                raise self.fail(key_node, f'{what}: key {key!r} is not a string')
+                raise self.fail(key_node, f'{what}: key {_cut(repr(key))} is not a string')
             if key == '<<' or key_node.tag == 'tag:yaml.org,2002:merge':
                 raise self.fail(key_node, f'{what}: merge keys (<<) are not allowed')
             if key in result:
-                raise self.fail(key_node, f'{what}: duplicate key {key!r}')
+                raise self.fail(key_node, f'{what}: duplicate key {_cut(repr(key))}')
             if key not in allowed:
                 raise self.fail(
-                    key_node, f'{what}: unknown key {key!r} (known: {", ".join(allowed)})'
+                    key_node,
+                    f'{what}: unknown key {_cut(repr(key))} (known: {", ".join(allowed)})',
                 )
             result[key] = value_node
         return result
 
-    def scalar(self, node: yaml.Node) -> Any:
+    def scalar(self, node: yaml.Node, what: str) -> Any:
         if not isinstance(node, yaml.ScalarNode):
             raise self.fail(node, 'expected a single value, found a list or mapping')
+        if node.tag in _NUMBER_TAGS and len(node.value) > MAX_NUMBER_CHARACTERS:
+            # A 4,300-digit integer cannot even be converted (ValueError), a long 1:2:3... one
+            # takes quadratic time, and no value this file holds needs more than 25 characters.
+            raise self.fail(
+                node,
+                f'{what}: number {_cut(node.value)} is longer than {MAX_NUMBER_CHARACTERS} '
+                'characters',
+            )
         try:
             return self._constructor.construct_object(node, deep=True)
         except yaml.YAMLError as error:
-            raise self.fail(node, f'bad value: {error}') from None
+            raise self.fail(node, f'{what}: bad value: {error}') from None
+        except (ValueError, OverflowError) as error:
+            raise self.fail(node, f'{what}: bad value {_cut(node.value)}: {error}') from None
 
-    def value(self, node: yaml.Node) -> Any:
+    def value(self, node: yaml.Node, what: str) -> Any:
         self.visit(node)
-        return self.scalar(node)
+        return self.scalar(node, what)
 
-    def integer(self, node: yaml.Node, what: str, minimum: int = 0) -> int:
-        value = self.value(node)
+    def integer(
+        self, node: yaml.Node, what: str, minimum: int = 0, maximum: int = MAX_INTEGER
+    ) -> int:
+        value = self.value(node, what)
         if isinstance(value, bool) or not isinstance(value, int):
-            raise self.fail(node, f'{what} must be an integer, got {value!r}')
+            raise self.fail(node, f'{what} must be an integer, got {_cut(repr(value))}')
         if value < minimum:
             raise self.fail(node, f'{what} must be >= {minimum}, got {value}')
+        if value > maximum:
+            raise self.fail(node, f'{what} must be <= {maximum}, got {value}')
         return value
 
     def number(self, node: yaml.Node, what: str) -> float:
-        value = self.value(node)
+        value = self.value(node, what)
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise self.fail(node, f'{what} must be a number, got {value!r}')
-        number = float(value)
+            raise self.fail(node, f'{what} must be a number, got {_cut(repr(value))}')
+        try:
+            number = float(value)
+        except OverflowError:
+            number = math.inf
         if not math.isfinite(number):
             raise self.fail(node, f'{what} must be finite, got {value!r}')
         return number
@@ -262,15 +290,15 @@ class _Reader:
         )
 
     def frame_id(self, node: yaml.Node, what: str) -> str:
-        value = self.value(node)
+        value = self.value(node, what)
         if not isinstance(value, str):
-            raise self.fail(node, f'{what} must be a string, got {value!r}')
+            raise self.fail(node, f'{what} must be a string, got {_cut(repr(value))}')
         if not value:
             raise self.fail(node, f'{what} must not be empty')
         if len(value) > MAX_FRAME_ID_LENGTH:
             raise self.fail(node, f'{what} is longer than {MAX_FRAME_ID_LENGTH} characters')
         if any(ord(c) < 32 or ord(c) == 127 for c in value):
-            raise self.fail(node, f'{what} {value!r} contains control characters')
+            raise self.fail(node, f'{what} {_cut(repr(value))} contains control characters')
         return value
 
     def stamp(self, node: yaml.Node, what: str) -> int:
@@ -306,14 +334,14 @@ def _entry(reader: _Reader, node: yaml.Node, index: int) -> SnapshotTransform:
         )
     is_static = True
     if 'static' in fields:
-        flag = reader.value(fields['static'])
+        flag = reader.value(fields['static'], f'{what}.static')
         if not isinstance(flag, bool):
             raise reader.fail(fields['static'], f'{what}.static must be true or false')
         is_static = flag
     stamp_ns = reader.stamp(fields['stamp'], f'{what}.stamp') if 'stamp' in fields else None
     authority = None
     if 'authority' in fields:
-        authority_value = reader.value(fields['authority'])
+        authority_value = reader.value(fields['authority'], f'{what}.authority')
         if not isinstance(authority_value, str) or len(authority_value) > MAX_FRAME_ID_LENGTH:
             raise reader.fail(fields['authority'], f'{what}.authority must be a short string')
         authority = authority_value

@@ -63,7 +63,7 @@ def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
         'transforms until Ctrl-C or --duration.',
     )
     parser.add_argument('--duration', type=_non_negative, default=None, help='seconds, then stop')
-    parser.add_argument('--rate', type=_positive, default=2.0, help='print rate in Hz (2)')
+    parser.add_argument('--rate', type=_rate, default=2.0, help='print rate in Hz (2)')
     parser.add_argument('--target', default='odom', help='target frame (odom)')
     parser.add_argument(
         '--source',
@@ -85,10 +85,13 @@ def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
     return options
 
 
-def _positive(text: str) -> float:
+def _rate(text: str) -> float:
+    from tf_demo.cli._args import rate_error
+
     value = _number(text)
-    if value <= 0.0:
-        msg = f'must be > 0, got {text}'
+    problem = rate_error(value)
+    if problem is not None:
+        msg = f'{problem}, got {text}'
         raise argparse.ArgumentTypeError(msg)
     return value
 

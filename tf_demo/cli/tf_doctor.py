@@ -34,8 +34,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-from tf_demo.cli._args import negative_wait_time_error
 from tf_demo.cli._args import split_ros_args
+from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._doctor import diagnose
 from tf_demo.cli._doctor import exit_code
 from tf_demo.cli._doctor import format_report
@@ -120,13 +120,18 @@ def _listen_and_report(options: argparse.Namespace) -> int:
         node.destroy_node()
 
 
+def options_error(options: argparse.Namespace) -> str | None:
+    """Return why parsed ``options`` cannot run, else None."""
+    return wait_time_error(options.wait_time)
+
+
 def main(args: list[str] | None = None) -> int:
     """Run tf_doctor with ``args`` (default: ``sys.argv[1:]``)."""
     tool_args, ros_args = split_ros_args(args)
     options = build_parser().parse_args(tool_args)
-    wait_time_error = negative_wait_time_error(options.wait_time)
-    if wait_time_error is not None:
-        print_error(TOOL, wait_time_error)
+    problem = options_error(options)
+    if problem is not None:
+        print_error(TOOL, problem)
         return 2
     if options.snapshot is not None:
         try:

@@ -28,10 +28,12 @@ from __future__ import annotations
 
 import argparse
 from collections import deque
+import math
 import sys
 import time
 from typing import Any
 
+from tf_demo.cli._args import count_argument
 from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._doctor import Observation
 from tf_demo.cli._live import print_error
@@ -171,14 +173,26 @@ def _monitor(options: argparse.Namespace) -> int:
         node.destroy_node()
 
 
-def main(args: list[str] | None = None) -> int:
-    """Run tf_monitor with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
+def build_parser() -> argparse.ArgumentParser:
+    """Return tf_monitor's argument parser (upstream's two frames plus the additions)."""
     parser = argparse.ArgumentParser(prog='tf_monitor', add_help=True)
     parser.add_argument('frames', nargs='*')
     parser.add_argument('--interval', type=float, default=TICK_S * TICKS_PER_REPORT)
-    parser.add_argument('--limit', type=int, default=None)
-    options = parser.parse_args(tool_args)
+    parser.add_argument('--limit', type=count_argument, default=None)
+    return parser
+
+
+def options_error(options: argparse.Namespace) -> str | None:
+    """Return why parsed ``options`` cannot run (besides the frame count), else None."""
+    if not (options.interval > 0 and math.isfinite(options.interval)):
+        return f'--interval must be a finite number > 0, got {options.interval}'
+    return None
+
+
+def main(args: list[str] | None = None) -> int:
+    """Run tf_monitor with ``args`` (default: ``sys.argv[1:]``)."""
+    tool_args, ros_args = split_ros_args(args)
+    options = build_parser().parse_args(tool_args)
     if len(options.frames) not in (0, 2):
         from tf_demo.transport.logging import format_log_line
         from tf_demo.transport.logging import LoggingSeverity
@@ -191,8 +205,9 @@ def main(args: list[str] | None = None) -> int:
         )
         print(line, file=sys.stderr, flush=True)
         return 255
-    if not options.interval > 0 or (options.limit is not None and options.limit < 1):
-        print_error('tf_monitor', '--interval must be > 0 and --limit >= 1')
+    problem = options_error(options)
+    if problem is not None:
+        print_error('tf_monitor', problem)
         return 2
     return run_tool(TOOL, ros_args, lambda: _monitor(options))
 

@@ -35,8 +35,8 @@ import math
 import sys
 from typing import Any
 
-from tf_demo.cli._args import negative_wait_time_error
 from tf_demo.cli._args import split_ros_args
+from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._doctor import Observation
 from tf_demo.cli._doctor import TF_STATIC_TOPIC
 from tf_demo.cli._live import buffer_from_observations
@@ -45,6 +45,8 @@ from tf_demo.cli._live import print_error
 from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import ToolError
+from tf_demo.cli._output import output_path_error
+from tf_demo.cli._output import OutputFileError
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotTransform
 from tf_demo.cli._snapshot import write_snapshot
@@ -197,22 +199,26 @@ def _record_and_save(options: argparse.Namespace) -> int:
         )
         try:
             write_snapshot(options.output, snapshot)
-        except OSError as error:
-            msg = f'cannot write {options.output}: {error.strerror}'
-            raise ToolError(msg) from None
+        except OutputFileError as error:
+            raise ToolError(str(error)) from None
         node.get_logger().info(f'Saved {len(entries)} transforms to {options.output}')
         return 0
     finally:
         node.destroy_node()
 
 
+def options_error(options: argparse.Namespace) -> str | None:
+    """Return why parsed ``options`` cannot run (checked before listening), else None."""
+    return wait_time_error(options.wait_time) or output_path_error(options.output)
+
+
 def main(args: list[str] | None = None) -> int:
     """Run tf_saver with ``args`` (default: ``sys.argv[1:]``)."""
     tool_args, ros_args = split_ros_args(args)
     options = build_parser().parse_args(tool_args)
-    wait_time_error = negative_wait_time_error(options.wait_time)
-    if wait_time_error is not None:
-        print_error(TOOL, wait_time_error)
+    problem = options_error(options)
+    if problem is not None:
+        print_error(TOOL, problem)
         return 2
     return run_tool(TOOL, ros_args, lambda: _record_and_save(options))
 

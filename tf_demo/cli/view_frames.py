@@ -32,12 +32,15 @@ import time
 from typing import Any
 
 from tf_demo.cli._args import split_ros_args
+from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._live import buffer_from_observations
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import print_error
 from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import ToolError
+from tf_demo.cli._output import OutputFileError
+from tf_demo.cli._output import write_text_atomically
 from tf_demo.cli._snapshot import frames_yaml_data
 from tf_demo.cli._snapshot import read_snapshot
 from tf_demo.cli._snapshot import SnapshotError
@@ -83,11 +86,9 @@ def write_graph(logger: Any, data: Any, recorded_time: tuple[int, int], output: 
     frames_gv, frames_pdf = output_names(output)
     logger.info(f'Exporting graph in {frames_pdf} file...')
     try:
-        with open(frames_gv, 'w', encoding='utf-8') as handle:
-            handle.write(generate_dot(data, recorded_time))
-    except OSError as error:
-        msg = f'cannot write {frames_gv}: {error.strerror}'
-        raise ToolError(msg) from None
+        write_text_atomically(frames_gv, generate_dot(data, recorded_time))
+    except OutputFileError as error:
+        raise ToolError(str(error)) from None
     dot = shutil.which('dot')
     if dot is None:
         msg = f"graphviz 'dot' is not installed; the graph is in {frames_gv}"
@@ -136,12 +137,18 @@ class _StderrLogger:
         print(line, file=sys.stderr, flush=True)
 
 
+def options_error(options: argparse.Namespace) -> str | None:
+    """Return why parsed ``options`` cannot run, else None."""
+    return wait_time_error(options.wait_time)
+
+
 def main(args: list[str] | None = None) -> int:
     """Run view_frames with ``args`` (default: ``sys.argv[1:]``)."""
     tool_args, ros_args = split_ros_args(args)
     options = build_parser().parse_args(tool_args)
-    if options.wait_time < 0 or options.wait_time != options.wait_time:
-        print_error(TOOL, f'--wait-time must be >= 0, got {options.wait_time}')
+    problem = options_error(options)
+    if problem is not None:
+        print_error(TOOL, problem)
         return 2
     if options.snapshot is not None:
         try:
