@@ -27,6 +27,8 @@ TOOLS = [
     'tf_loader',
     'tf_demo_live',
 ]
+# Upstream's names for the same tools (tf2_ros' tf2_echo and tf2_monitor).
+ALIASES = {'tf2_echo': 'tf_echo', 'tf2_monitor': 'tf_monitor'}
 
 setup(
     name=package_name,
@@ -71,7 +73,7 @@ setup(
         'console_scripts': (
             [f'{name} = tf_demo.nodes.{name}:main' for name in NODES]
             + [f'{name} = tf_demo.cli.{name}:main' for name in TOOLS]
-            + ['tf2_echo = tf_demo.cli.tf_echo:main']
+            + [f'{alias} = tf_demo.cli.{tool}:main' for alias, tool in ALIASES.items()]
         ),
     },
 )

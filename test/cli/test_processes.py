@@ -608,6 +608,45 @@ def test_monitor_usage_exit_255(spawn):
     assert err.endswith('[]: TF_Monitor: usage: tf2_monitor framea frameb\n')
 
 
+def installed_script(name):
+    """The installed console script ``name``: in the venv's bin, else the overlay's lib/tf_demo."""
+    candidates = [Path(sys.executable).parent / name]
+    candidates += [
+        Path(prefix) / 'lib' / 'tf_demo' / name
+        for prefix in os.environ.get('AMENT_PREFIX_PATH', '').split(os.pathsep)
+        if prefix
+    ]
+    for candidate in candidates:
+        if candidate.is_file():
+            return candidate
+    pytest.skip(f'{name} is not installed here (pip install -e . or colcon build)')
+    return None
+
+
+@pytest.mark.parametrize(
+    ('alias', 'tool'), [('tf2_monitor', 'tf_monitor'), ('tf2_echo', 'tf_echo')]
+)
+def test_upstream_names_are_aliases_of_the_tools(world_env, alias, tool):
+    """tf2_monitor and tf2_echo are installed and run tf_monitor and tf_echo (issue 10, 13)."""
+    from importlib.metadata import entry_points
+
+    scripts = {e.name: e.value for e in entry_points(group='console_scripts')}
+    assert scripts[alias] == scripts[tool] == f'tf_demo.cli.{tool}:main'
+    completed = subprocess.run(
+        [str(installed_script(alias)), 'only_one'],
+        env=world_env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    if tool == 'tf_monitor':
+        assert completed.returncode == 255
+        assert completed.stderr.endswith('[]: TF_Monitor: usage: tf2_monitor framea frameb\n')
+    else:
+        assert (completed.returncode, completed.stdout) == (1, ECHO_USAGE)
+
+
 def test_monitor_all_frames(spawn, peers):
     """Without arguments tf_monitor reports every frame, sorted, and one broadcaster line."""
     peers(static('map', 'odom'), dynamic('odom', 'base_link', rate=20.0))
