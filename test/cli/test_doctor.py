@@ -23,6 +23,8 @@ from tf_demo.cli._doctor import format_report_json
 from tf_demo.cli._doctor import Observation
 from tf_demo.cli._doctor import observations_from_snapshot
 from tf_demo.cli._doctor import ObservedTransform
+from tf_demo.cli._doctor import RobotInfo
+from tf_demo.cli._doctor import RobotJoint
 from tf_demo.cli._doctor import summarize
 from tf_demo.cli._doctor import TF_STATIC_TOPIC
 from tf_demo.cli._doctor import TF_TOPIC
@@ -298,3 +300,81 @@ def test_lookup_without_common_time_fails():
     finding = next(f for f in findings if f.kind == 'lookup_fails')
     assert 'extrapolation into the past' in finding.message
     assert diagnose(healthy(), frames=['map', 'laser', 'camera']) == []
+
+
+# --- issue 10, point 13: advice that names the real cause ----------------------------------------
+
+REVOLUTE_ROBOT = (
+    RobotJoint('world_to_frame_1', 'fixed', 'world', 'frame_1'),
+    RobotJoint('frame_1_to_frame_2', 'revolute', 'frame_1', 'frame_2'),
+    RobotJoint('frame_2_to_tool', 'fixed', 'frame_2', 'tool'),
+    RobotJoint('follower', 'revolute', 'frame_2', 'finger', mimic='frame_1_to_frame_2'),
+)
+
+
+def test_a_frame_below_a_moving_joint_without_joint_states_names_the_missing_publisher():
+    """Not 'did you mean frame_1': frame_2 waits for /joint_states, which nobody publishes."""
+    robot = RobotInfo(REVOLUTE_ROBOT, joint_state_messages=0)
+    findings = diagnose(
+        [static('world', 'frame_1')], frames=['world', 'frame_2'], robot=robot, listen_ns=3 * S
+    )
+    assert kinds(findings) == ['missing_frame', 'no_joint_states']
+    missing = next(f for f in findings if f.kind == 'missing_frame')
+    assert 'did you mean' not in missing.message
+    assert "revolute joint 'frame_1_to_frame_2'" in missing.message
+    assert 'no /joint_states message arrived' in missing.message
+    assert missing.fix.startswith("joint_state_publisher (or the robot's driver) is missing")
+    summary = next(f for f in findings if f.kind == 'no_joint_states')
+    assert summary.frames == ('finger', 'frame_2', 'tool')
+    assert 'no /joint_states message arrived in 3.000 s' in summary.message
+    assert "'frame_1_to_frame_2'" in summary.message
+
+
+def test_joint_states_that_never_name_the_joint_are_reported_as_such():
+    """/joint_states arrives but without the joint: say so, with the names to check."""
+    robot = RobotInfo(REVOLUTE_ROBOT, 12, frozenset({'other_joint'}))
+    findings = diagnose([static('world', 'frame_1')], frames=['frame_2'], robot=robot)
+    assert kinds(findings) == ['joint_positions_missing', 'missing_frame']
+    missing = next(f for f in findings if f.kind == 'missing_frame')
+    assert "/joint_states never gave a position for 'frame_1_to_frame_2'" in missing.message
+    assert 'joint names exactly as in the URDF' in missing.fix
+
+
+def test_a_joint_with_a_position_or_a_robot_not_in_tf_is_not_blamed():
+    """With the position (a mimic follows its source) or with no robot link in tf: no blame."""
+    named = RobotInfo(REVOLUTE_ROBOT, 5, frozenset({'frame_1_to_frame_2'}))
+    findings = diagnose([static('world', 'frame_1')], frames=['frame_2'], robot=named)
+    assert kinds(findings) == ['missing_frame']
+    assert 'did you mean' in findings[0].message
+    unrelated = diagnose(
+        [static('map', 'odom')], frames=['frame_2'], robot=RobotInfo(REVOLUTE_ROBOT)
+    )
+    assert kinds(unrelated) == ['missing_frame']
+
+
+def test_a_fixed_mount_sent_repeatedly_on_tf_belongs_on_tf_static():
+    """Not 'publish faster': a transform that never changes is published once on /tf_static."""
+    observations = [
+        static('map', 'odom'),
+        *stream('odom', 'base_link', seconds=5.0),
+        *stream('base_link', 'laser', rate_hz=1.0, seconds=5.0, values=[(0.1, 0.0, 0.2)]),
+    ]
+    findings = diagnose(observations, listen_ns=5 * S)
+    assert kinds(findings) == ['fixed_mount_on_tf']
+    finding = findings[0]
+    assert finding.severity == 'warning'
+    assert 'base_link→laser arrived 5 times on /tf with the same value' in finding.message
+    assert finding.fix.startswith('Publish a fixed mount once on /tf_static')
+    assert 'faster' not in finding.fix
+    fast = diagnose([*stream('base_link', 'laser', values=[(0.1, 0.0, 0.2)])], listen_ns=2 * S)
+    assert [(f.kind, f.severity) for f in fast] == [('fixed_mount_on_tf', 'info')]
+    assert exit_code(fast) == 0
+
+
+def test_standing_still_is_not_a_fixed_mount():
+    """Odometry of a robot at rest and a robot joint at rest keep the usual advice."""
+    resting = stream('odom', 'base_link', rate_hz=1.0, seconds=4.0, values=[(1.0, 0.0, 0.0)])
+    assert kinds(diagnose(resting)) == ['sparse_data']
+    joint = stream('frame_1', 'frame_2', rate_hz=1.0, seconds=4.0, values=[(1.0, 0.0, 0.0)])
+    robot = RobotInfo(REVOLUTE_ROBOT, 4, frozenset({'frame_1_to_frame_2'}))
+    assert kinds(diagnose(joint, robot=robot)) == ['sparse_data']

@@ -406,8 +406,9 @@ def test_doctor_finds_timing_and_publisher_faults(spawn, peers):
         static('map', 'odom'),
         dynamic('map', 'odom', rate=20.0),
         dynamic('odom', 'base_link', rate=20.0, stamp_offset=5.0),
-        dynamic('odom', 'slow', rate=1.0),
+        dynamic('odom', 'slow', rate=1.0, values=[[0, 0, 0], [0.1, 0, 0], [0.2, 0, 0]]),
         dynamic('odom', 'arm', rate=20.0, values=[[0, 0, 0], [1, 0, 0]]),
+        dynamic('odom', 'mount', rate=1.8),
     )
     code, report = doctor(spawn)
     found = {(f['kind'], f['frames'][0]) for f in report['findings']}
@@ -416,6 +417,31 @@ def test_doctor_finds_timing_and_publisher_faults(spawn, peers):
     assert ('future_stamps', 'base_link') in found
     assert ('sparse_data', 'slow') in found
     assert ('publishers_fighting', 'arm') in found
+    # A fixed mount sent again and again on /tf: "publish it once on /tf_static", not "faster".
+    assert ('fixed_mount_on_tf', 'mount') in found
+    assert ('sparse_data', 'mount') not in found
+
+
+def test_doctor_blames_the_missing_joint_state_publisher(spawn):
+    """
+    robot_state_publisher alone: frame_2 hangs below a revolute joint and no /joint_states come.
+
+    The advice names joint_state_publisher (or the driver), not "did you mean 'frame_1'".
+    """
+    urdf = Path(__file__).resolve().parents[2] / 'urdf' / 'example_revolute.urdf'
+    publisher = spawn.start('robot_state_publisher', '--ros-args', '-p', f'urdf_file:={urdf}')
+    for line in publisher.stderr:  # bounded by the process's own output
+        if 'Robot initialized' in line:
+            break
+    code, report = doctor(spawn, '--frames', 'world', 'frame_2')
+    assert code == 1
+    by_kind = {f['kind']: f for f in report['findings']}
+    assert set(by_kind) == {'missing_frame', 'no_joint_states'}, report
+    missing = by_kind['missing_frame']
+    assert 'did you mean' not in missing['message']
+    assert "revolute joint 'frame_1_to_frame_2'" in missing['message']
+    assert missing['fix'].startswith("joint_state_publisher (or the robot's driver) is missing")
+    assert by_kind['no_joint_states']['frames'] == ['frame_2']
 
 
 # rclpy Jazzy's MessageInfo carries no publisher GID, so only the standalone world's tf_doctor

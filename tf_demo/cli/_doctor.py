@@ -72,6 +72,33 @@ class Observation:
     publisher: str = ''
 
 
+MOVING_JOINT_TYPES = ('revolute', 'continuous', 'prismatic')
+
+
+@dataclass(frozen=True)
+class RobotJoint:
+    """One joint of the robot_description: ``parent`` link, ``child`` link, ``mimic`` source."""
+
+    name: str
+    type: str
+    parent: str
+    child: str
+    mimic: str | None = None
+
+
+@dataclass(frozen=True)
+class RobotInfo:
+    """What was heard about the robot: /robot_description's joints and /joint_states' names."""
+
+    joints: tuple[RobotJoint, ...]
+    joint_state_messages: int = 0
+    joint_state_names: frozenset[str] = frozenset()
+
+    def has_position(self, joint: RobotJoint) -> bool:
+        """Whether /joint_states gave ``joint`` a position (a mimic joint follows its source)."""
+        return (joint.mimic or joint.name) in self.joint_state_names
+
+
 @dataclass(frozen=True)
 class Thresholds:
     """Limits of the timing checks (seconds)."""
@@ -227,6 +254,7 @@ def diagnose(
     check_timing: bool = True,
     thresholds: Thresholds | None = None,
     unmatched_publishers: Mapping[str, int] | None = None,
+    robot: RobotInfo | None = None,
 ) -> list[Finding]:
     """
     Find every tf problem the observations show.
@@ -238,6 +266,8 @@ def diagnose(
     :param check_timing: False for snapshots, which carry no reception times.
     :param unmatched_publishers: per topic, publishers seen in the graph whose QoS never matched
         the listener (see ``TfRecorder.unmatched_publishers``).
+    :param robot: the robot_description's joints and the joint names /joint_states gave, when
+        known: links below a moving joint without a position are explained by that.
     :return: findings, errors first, in a stable order.
     """
     limits = thresholds or Thresholds()
@@ -255,14 +285,17 @@ def diagnose(
                 'with -t if they publish slowly.',
             )
         )
-        findings.extend(_missing_frames(frames, set()))
+        findings.extend(_missing_frames(frames, set(), {}, robot))
         return findings
 
     stats = _gather(observations)
     parent_of = {child: entry.latest_parent for child, entry in stats.items()}
     known = set(parent_of) | set(parent_of.values())
+    blocked = _links_without_joint_positions(robot, known) if robot is not None else {}
 
-    findings.extend(_missing_frames(frames, known))
+    findings.extend(_missing_frames(frames, known, blocked, robot))
+    if robot is not None:
+        findings.extend(_joint_states_missing(blocked, robot, listen_ns))
     findings.extend(_parent_conflicts(stats, limits))
     cycle = find_cycle((parent, child) for child, parent in parent_of.items())
     if cycle is not None:
@@ -282,7 +315,8 @@ def diagnose(
     findings.extend(_rep105(parent_of))
     findings.extend(_leading_slashes(known))
     if check_timing:
-        findings.extend(_timing(stats, listen_ns, limits))
+        moving = {j.child for j in (robot.joints if robot else ()) if j.type in MOVING_JOINT_TYPES}
+        findings.extend(_timing(stats, listen_ns, limits, moving))
         findings.extend(_stopped(stats, max(o.receive_ns for o in observations)))
         if not any(f.kind in ('missing_frame', 'disconnected', 'loop') for f in findings):
             findings.extend(_lookups(observations, frames))
@@ -316,10 +350,34 @@ def _qos_mismatches(unmatched: Mapping[str, int]) -> list[Finding]:
     ]
 
 
-def _missing_frames(frames: Sequence[str], known: set[str]) -> list[Finding]:
+def _missing_frames(
+    frames: Sequence[str],
+    known: set[str],
+    blocked: Mapping[str, RobotJoint],
+    robot: RobotInfo | None,
+) -> list[Finding]:
     findings = []
     for frame in frames:
         if frame in known:
+            continue
+        if frame in blocked and robot is not None:
+            joint = blocked[frame]
+            why = (
+                'no /joint_states message arrived'
+                if robot.joint_state_messages == 0
+                else f"/joint_states never gave a position for '{joint.mimic or joint.name}'"
+            )
+            findings.append(
+                Finding(
+                    'missing_frame',
+                    'error',
+                    (frame,),
+                    f"Frame '{frame}' does not exist in the tf tree: it hangs below the "
+                    f"{joint.type} joint '{joint.name}', which robot_state_publisher publishes "
+                    f'only with a position from /joint_states, and {why}.',
+                    _joint_states_fix(robot),
+                )
+            )
             continue
         hints = []
         if frame.startswith('/') and frame.lstrip('/') in known:
@@ -340,6 +398,86 @@ def _missing_frames(frames: Sequence[str], known: set[str]) -> list[Finding]:
             )
         )
     return findings
+
+
+def _links_without_joint_positions(robot: RobotInfo, known: set[str]) -> dict[str, RobotJoint]:
+    """
+    Map each robot link missing from tf to the moving joint that keeps it out, if any.
+
+    Walking up from the link to the first frame tf knows, the topmost moving joint without a
+    position is the one to fix first. Nothing is reported when no link of the robot is in tf at
+    all (robot_state_publisher not running, or a frame prefix): that is another problem.
+    """
+    parent_joint = {joint.child: joint for joint in robot.joints}
+    links = set(parent_joint) | {joint.parent for joint in robot.joints}
+    if not links & known:
+        return {}
+    blocked: dict[str, RobotJoint] = {}
+    for link in sorted(set(parent_joint) - known):
+        frame, blocking, seen = link, None, {link}
+        while frame in parent_joint and frame not in known:
+            joint = parent_joint[frame]
+            if joint.type in MOVING_JOINT_TYPES and not robot.has_position(joint):
+                blocking = joint
+            frame = joint.parent
+            if frame in seen:
+                break
+            seen.add(frame)
+        if blocking is not None and frame in known:
+            blocked[link] = blocking
+    return blocked
+
+
+def _joint_states_fix(robot: RobotInfo) -> str:
+    if robot.joint_state_messages == 0:
+        return (
+            "joint_state_publisher (or the robot's driver) is missing: nothing publishes "
+            '/joint_states. Without hardware start joint_state_publisher (ros2 run tf_demo '
+            'joint_state_publisher, or joint_state_publisher_gui to move the joints); on the '
+            "robot start its driver or ros2_control's joint_state_broadcaster."
+        )
+    return (
+        'Publish a position for these joints in /joint_states, with the joint names exactly as '
+        "in the URDF: from the robot's driver, or joint_state_publisher for joints without "
+        'hardware.'
+    )
+
+
+def _joint_states_missing(
+    blocked: Mapping[str, RobotJoint], robot: RobotInfo, listen_ns: int
+) -> list[Finding]:
+    """One finding for the robot links that tf lacks because joint positions never arrived."""
+    if not blocked:
+        return []
+    joints = sorted({joint.mimic or joint.name for joint in blocked.values()})
+    links = sorted(blocked)
+    shown_links = _format_members(links)
+    shown_joints = ', '.join(f"'{j}'" for j in joints[:8])
+    if len(joints) > 8:
+        shown_joints += f', … ({len(joints) - 8} more)'
+    if robot.joint_state_messages == 0:
+        heard = 'no /joint_states message arrived' + (
+            f' in {_seconds(listen_ns)}' if listen_ns else ''
+        )
+        kind = 'no_joint_states'
+    else:
+        count = robot.joint_state_messages
+        heard = (
+            f'/joint_states arrived ({count} message{"s" if count != 1 else ""}) but never '
+            'named them'
+        )
+        kind = 'joint_positions_missing'
+    return [
+        Finding(
+            kind,
+            'error',
+            tuple(links),
+            f'The robot_description has links that tf lacks: {shown_links}. They hang below '
+            f'the moving joint(s) {shown_joints}; robot_state_publisher publishes a moving '
+            f'joint only when /joint_states gives its position, and {heard}.',
+            _joint_states_fix(robot),
+        )
+    ]
 
 
 def _parent_conflicts(stats: dict[str, _ChildStats], limits: Thresholds) -> list[Finding]:
@@ -526,7 +664,23 @@ def _rep105(parent_of: dict[str, str]) -> list[Finding]:
     return findings
 
 
-def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -> list[Finding]:
+# Links that move by nature even when a robot stands still during the recording.
+_DYNAMIC_BY_NATURE = frozenset(
+    (parent, child) for parent, child in (link.split('→') for link in _LINK_PUBLISHERS)
+) - {('earth', 'map')}
+
+
+def _timing(
+    stats: dict[str, _ChildStats],
+    listen_ns: int,
+    limits: Thresholds,
+    moving: set[str] | frozenset[str] = frozenset(),
+) -> list[Finding]:
+    """
+    Stamp, rate and constancy findings for the frames on /tf.
+
+    :param moving: children of the robot's moving joints (never called fixed mounts).
+    """
     findings = []
     for child in sorted(stats):
         samples = stats[child].dynamic
@@ -585,6 +739,16 @@ def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -
             )
         stamps = sorted({stamp for _, stamp, _, _ in samples})
         window = listen_ns or (samples[-1][0] - samples[0][0])
+        gaps = [b - a for a, b in itertools.pairwise(stamps)]
+        sparse = (len(stamps) == 1 and window >= NS_PER_S) or bool(
+            gaps and statistics.median(gaps) > limits.max_gap_s * NS_PER_S
+        )
+        fixed = _fixed_mount_on_tf(
+            parent, child, samples, sparse=sparse, limits=limits, moving=moving
+        )
+        if fixed is not None:
+            findings.append(fixed)
+            continue  # "publish faster" is not the fix for a transform that never changes
         if len(stamps) == 1 and window >= NS_PER_S:
             findings.append(
                 Finding(
@@ -598,7 +762,6 @@ def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -
                 )
             )
             continue
-        gaps = [b - a for a, b in itertools.pairwise(stamps)]
         if gaps and statistics.median(gaps) > limits.max_gap_s * NS_PER_S:
             rate = (len(stamps) - 1) / ((stamps[-1] - stamps[0]) / NS_PER_S)
             findings.append(
@@ -614,6 +777,38 @@ def _timing(stats: dict[str, _ChildStats], listen_ns: int, limits: Thresholds) -
                 )
             )
     return findings
+
+
+def _fixed_mount_on_tf(
+    parent: str,
+    child: str,
+    samples: Sequence[tuple[int, int, Vec3, Quat]],
+    *,
+    sparse: bool,
+    limits: Thresholds,
+    moving: set[str] | frozenset[str],
+) -> Finding | None:
+    """Report a transform sent again and again on /tf with one value (a fixed mount)."""
+    if len(samples) < 3 or child in moving or (parent, child) in _DYNAMIC_BY_NATURE:
+        return None
+    values = [(translation, rotation) for _, _, translation, rotation in samples]
+    if len(_distinct_values(values, limits.value_tolerance)) != 1:
+        return None
+    consequence = (
+        'Between its messages tf2 can only extrapolate, so lookups at now() fail'
+        if sparse
+        else 'It works, but listeners only find it at the stamps sent (and 10 s back)'
+    )
+    return Finding(
+        'fixed_mount_on_tf',
+        'warning' if sparse else 'info',
+        (child,),
+        f'{parent}→{child} arrived {len(samples)} times on {TF_TOPIC} with the same value every '
+        f'time: it looks like a fixed mount. {consequence}.',
+        'Publish a fixed mount once on /tf_static instead (static_transform_publisher, a '
+        'StaticTransformBroadcaster, or a fixed joint in the URDF): lookups then succeed at any '
+        'time. If this frame really moves and only stood still, ignore this.',
+    )
 
 
 def _lookups(observations: Sequence[Observation], frames: Sequence[str]) -> list[Finding]:

@@ -33,6 +33,8 @@ from __future__ import annotations
 
 import argparse
 import sys
+import threading
+from typing import Any
 
 from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._args import wait_time_error
@@ -42,6 +44,8 @@ from tf_demo.cli._doctor import format_report
 from tf_demo.cli._doctor import format_report_json
 from tf_demo.cli._doctor import Observation
 from tf_demo.cli._doctor import observations_from_snapshot
+from tf_demo.cli._doctor import RobotInfo
+from tf_demo.cli._doctor import RobotJoint
 from tf_demo.cli._doctor import summarize
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import print_error
@@ -82,6 +86,7 @@ def _report(
     timing: bool,
     listen_ns: int,
     unmatched: dict[str, int] | None = None,
+    robot: RobotInfo | None = None,
 ) -> int:
     findings = diagnose(
         observations,
@@ -89,6 +94,7 @@ def _report(
         frames=options.frames,
         check_timing=timing,
         unmatched_publishers=unmatched,
+        robot=robot,
     )
     summary = summarize(observations)
     if options.json:
@@ -99,12 +105,86 @@ def _report(
     return exit_code(findings)
 
 
+MAX_JOINT_NAMES = 10_000
+
+
+class RobotRecorder:
+    """
+    Hear ``/robot_description`` (latched) and which joints ``/joint_states`` names.
+
+    With them the report can say that a link is missing because its moving joint never got a
+    position (joint_state_publisher or the driver is not running).
+    """
+
+    def __init__(self, node: Any) -> None:
+        from tf_demo.transport.messages import sensor_msgs
+        from tf_demo.transport.messages import std_msgs
+        from tf_demo.transport.qos import DurabilityPolicy
+        from tf_demo.transport.qos import qos_profile_sensor_data
+        from tf_demo.transport.qos import QoSProfile
+        from tf_demo.transport.qos import ReliabilityPolicy
+
+        self._lock = threading.Lock()
+        self.description: str | None = None
+        self.joint_state_messages = 0
+        self.joint_names: set[str] = set()
+        latched = QoSProfile(
+            depth=1,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL,
+            reliability=ReliabilityPolicy.RELIABLE,
+        )
+        self._subscriptions = [
+            node.create_subscription(
+                std_msgs.String, '/robot_description', self._on_description, latched
+            ),
+            node.create_subscription(
+                sensor_msgs.JointState,
+                '/joint_states',
+                self._on_joint_states,
+                qos_profile_sensor_data,
+            ),
+        ]
+
+    def _on_description(self, message: Any) -> None:
+        with self._lock:
+            self.description = str(message.data)
+
+    def _on_joint_states(self, message: Any) -> None:
+        with self._lock:
+            self.joint_state_messages += 1
+            for name in message.name:
+                if len(self.joint_names) >= MAX_JOINT_NAMES:
+                    break
+                self.joint_names.add(str(name))
+
+    def info(self) -> RobotInfo | None:
+        """Return the robot as heard, or None without a (valid) robot_description."""
+        from tf_demo.urdf import RobotModel
+        from tf_demo.urdf import UrdfError
+
+        with self._lock:
+            description = self.description
+            messages, names = self.joint_state_messages, frozenset(self.joint_names)
+        if description is None:
+            return None
+        try:
+            model = RobotModel.from_string(description, source='/robot_description')
+        except (UrdfError, ValueError):
+            return None  # a broken description is robot_state_publisher's to report
+        joints = tuple(
+            RobotJoint(j.name, j.type, j.parent, j.child, j.mimic.joint if j.mimic else None)
+            for j in model.joints
+        )
+        return RobotInfo(joints, messages, names)
+
+
 def _listen_and_report(options: argparse.Namespace) -> int:
     from tf_demo import transport
 
     node = transport.create_node(TOOL)
     try:
         recorder = TfRecorder(node)
+        robot = RobotRecorder(node)
         start = node.get_clock().now().nanoseconds
         listen(node, options.wait_time)
         listen_ns = node.get_clock().now().nanoseconds - start
@@ -115,6 +195,7 @@ def _listen_and_report(options: argparse.Namespace) -> int:
             timing=True,
             listen_ns=listen_ns,
             unmatched=recorder.unmatched_publishers(),
+            robot=robot.info(),
         )
     finally:
         node.destroy_node()
