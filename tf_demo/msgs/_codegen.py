@@ -22,8 +22,10 @@ length of a string or sequence. Alignment is relative to the first byte after th
 encapsulation header, so buffers always include that header and positions start at 4.
 
 Generated code raises whatever the failing operation raises (``struct.error``,
-``IndexError``, ``UnicodeDecodeError``, :class:`Malformed`...); :mod:`tf_demo.msgs.cdr` turns that
-into a :class:`~tf_demo.msgs.cdr.CdrError` that names the field, using the reference codec.
+``IndexError``, ``UnicodeDecodeError``, :class:`Malformed`...), also for the odd strings a ROS
+node accepts (length 0, a NUL inside, invalid UTF-8): :mod:`tf_demo.msgs.cdr` then asks the
+reference codec, which reads those as rclpy does, or raises a
+:class:`~tf_demo.msgs.cdr.CdrError` that names the field.
 """
 
 from __future__ import annotations
@@ -53,7 +55,7 @@ Decoder = Callable[[bytes, int], tuple[Any, int]]
 
 
 class Malformed(Exception):  # noqa: N818 - internal signal, never leaves tf_demo.msgs
-    """Raised by generated decoders for violations struct cannot detect (missing NUL, counts)."""
+    """Raised by generated decoders for what struct cannot detect (NULs, counts): slow path."""
 
 
 def _lowbit(value: int) -> int:
@@ -334,7 +336,7 @@ class _DecoderBuilder(_Builder):
             )
             self.emit(f'{", ".join([raw, nul, *self.run_items])} = {unpack}(buf, pos)')
             self.emit(f'pos += {size}')
-            self.emit(f'if {nul}:')
+            self.emit(f'if {nul} or 0 in {raw}:')
             self.emit('    raise _Malformed')
             self.emit(f'{string} = {raw}.decode()')
         else:
@@ -449,7 +451,7 @@ class _DecoderBuilder(_Builder):
                 self.emit(f'{", ".join(prefetch.temporaries)}, = {nones},')
             self.indent -= 1
         self.emit(f'pos += {size}')
-        self.emit(f'if {nul}:')
+        self.emit(f'if {nul} or 0 in {raw}:')
         self.emit('    raise _Malformed')
         self.emit(f'{string} = {raw}.decode()')
         self.settle()

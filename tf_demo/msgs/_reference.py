@@ -53,6 +53,18 @@ class CdrError(ValueError):
     """Bytes that are not a valid CDR encoding of the type, or a message that cannot be encoded."""
 
 
+def c_string(raw: bytes) -> str:
+    """
+    Return the text of a CDR string's bytes (its final NUL excluded) as rclpy gives it.
+
+    rmw_cyclonedds_cpp copies the bytes as a C string and rclpy decodes them with
+    ``PyUnicode_DecodeUTF8(data, strlen(data), "replace")``: the text ends at the first NUL,
+    and each invalid UTF-8 sequence becomes U+FFFD.
+    """
+    end = raw.find(0)
+    return (raw if end < 0 else raw[:end]).decode(errors='replace')
+
+
 def _join(path: str, name: str) -> str:
     """Return the dotted path of field ``name`` under ``path``."""
     return f'{path}.{name}' if path else name
@@ -95,20 +107,21 @@ class _Reader:
         return struct.unpack(self.endian + prim.code, chunk)[0]
 
     def string(self, path: str) -> str:
-        """Read one string: uint32 length including the NUL, the bytes, the NUL."""
+        """
+        Read one string: uint32 length including the NUL, the bytes, the NUL.
+
+        Odd strings read as a ROS 2 Jazzy rclpy node reads them (see :func:`c_string`); only a
+        string without its final NUL is an error, as in rmw_cyclonedds_cpp.
+        """
         length = self.primitive('uint32', path)
         if length == 0:
-            raise self.fail(path, 'string length 0 (a CDR string always has its NUL)')
+            return ''  # rmw_cyclonedds_cpp reads a zero length as the empty string
         start = self.pos
         chunk = self.take(length, path, f'string of length {length}')
         if chunk[-1] != 0:
             self.pos = start + length - 1
             raise self.fail(path, 'string does not end with NUL')
-        try:
-            return chunk[:-1].decode()
-        except UnicodeDecodeError as exc:
-            self.pos = start + exc.start
-            raise self.fail(path, f'string is not valid UTF-8 ({exc.reason})') from None
+        return c_string(chunk[:-1])
 
     def value(self, field: FieldSpec, path: str) -> Any:
         """Read one element of ``field``'s type."""

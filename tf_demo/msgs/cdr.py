@@ -20,6 +20,11 @@ CDR (XCDR1) serialisation byte-identical to ROS 2 Jazzy's rmw, with a fast tf pa
 type (see :mod:`tf_demo.msgs._codegen`). Any malformed input raises :class:`CdrError`, whose
 message names the type, the field and the byte offset.
 
+Odd strings read as a ROS 2 Jazzy rclpy node (rmw_cyclonedds_cpp) reads them: a length of 0 is
+``''``, the text ends at the first NUL, invalid UTF-8 becomes U+FFFD (see
+:func:`~tf_demo.msgs._reference.c_string`). The fast paths check for them (one ``0 in raw`` per
+string, a strict UTF-8 decode) and leave them to the reference decoder.
+
 TFMessages, the hot path, also have whole-message layouts: once the same frame-name lengths come
 twice, one precompiled struct reads or writes the whole message in one call (see
 :class:`_TfShapes` and :func:`_tf_encoder`); :func:`decode_tf_message_transforms` skips the
@@ -139,13 +144,18 @@ def serialize(message: Any) -> bytes:
         raise CdrError(msg) from exc
 
 
-def _diagnose(msgtype: str, buf: bytes, exc: Exception) -> CdrError:
-    """Return the precise error for bytes the fast decoder rejected."""
+def _slow_path(msgtype: str, buf: bytes) -> Any:
+    """
+    Decode bytes the fast decoder turned down with the reference decoder.
+
+    They hold an odd string a ROS node accepts (see the module docstring), or are malformed.
+
+    :raises CdrError: malformed; the reference's error names the field and byte.
+    """
     try:
-        reference_deserialize(msgtype, buf)
+        return reference_deserialize(msgtype, buf)
     except CdrError as error:
-        return error
-    return CdrError(f'cannot decode {msgtype}: {type(exc).__name__}: {exc}')
+        raise error from None
 
 
 def deserialize(msg_type: type[MessageT] | str | Any, data: bytes | bytearray | memoryview) -> Any:
@@ -165,8 +175,8 @@ def deserialize(msg_type: type[MessageT] | str | Any, data: bytes | bytearray | 
         check_header(msgtype, buf)
     try:
         return decoders[buf[1]](buf, 4)[0]
-    except Exception as exc:
-        raise _diagnose(msgtype, buf, exc) from None
+    except Exception:
+        return _slow_path(msgtype, buf)
 
 
 _MIN_TRANSFORM_SIZE = _codegen.min_wire_size('geometry_msgs/msg/TransformStamped')
@@ -222,7 +232,7 @@ def _tf_transforms(buf: bytes) -> list[TransformTuple]:
             )
             child, nul, tx, ty, tz, qx, qy, qz, qw = unpack(buf, pos)
         pos += size
-        if nul or parent_nul:
+        if nul or parent_nul or 0 in parent or 0 in child:
             raise _codegen.Malformed
         append((parent.decode(), child.decode(), stamp_ns, (tx, ty, tz), (qx, qy, qz, qw)))
     return result
@@ -293,7 +303,9 @@ class _TfShapes:
         """
         Return every field of ``buf`` (count first) and the end of the message, or None.
 
-        None means that ``buf`` does not have the layout known for its size (or none is).
+        None means that ``buf`` does not have the layout known for its size (or none is), or
+        holds a NUL inside a frame id (read by the slow path). The names are not decoded here
+        (invalid UTF-8 raises when they are).
         """
         layout = self.layouts.get(len(buf))
         if layout is None:
@@ -308,8 +320,9 @@ class _TfShapes:
             or values[0] != len(parents)
             or any(values[5::_TF_STRIDE])
             or any(values[8::_TF_STRIDE])
+            or 0 in b''.join(values[4::_TF_STRIDE] + values[7::_TF_STRIDE])
         ):
-            return None
+            return None  # another layout, a missing NUL, or a NUL inside a frame id
         return values, 4 + size
 
     def learn(self, size: int, parents: tuple[int, ...], children: tuple[int, ...]) -> None:
@@ -536,8 +549,20 @@ def decode_tf_message_transforms(data: bytes | bytearray | memoryview) -> list[T
             tuple([len(t[1].encode()) + 1 for t in transforms]),
         )
         return transforms
-    except Exception as exc:
-        raise _diagnose(_TF_MESSAGE, buf, exc) from None
+    except Exception:
+        message = _slow_path(_TF_MESSAGE, buf)
+    return [
+        (
+            t.header.frame_id, t.child_frame_id,
+            t.header.stamp.sec * 1_000_000_000 + t.header.stamp.nanosec,
+            (t.transform.translation.x, t.transform.translation.y, t.transform.translation.z),
+            (
+                t.transform.rotation.x, t.transform.rotation.y,
+                t.transform.rotation.z, t.transform.rotation.w,
+            ),
+        )
+        for t in message.transforms
+    ]  # fmt: skip
 
 
 def message_type(msgtype: str) -> type[Message]:
