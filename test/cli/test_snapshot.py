@@ -172,6 +172,7 @@ BAD_FILES = [
     (_replace('nanosec: 7', 'nanosec: ' + '9' * 50), ':13: transforms[1].stamp.nanosec must be'),
     (_replace('tf_demo_transforms: 1', 'tf_demo_transforms: ' + '1' * 4300), ':1: tf_demo_'),
     (_replace('child: odom', 'child: odom\n    ' + 'k' * 1000 + ': 1'), '(1002 characters)'),
+    (_replace('child: odom', 'child: od\udcffom'), ':5: not UTF-8 text (a lone surrogate)'),
 ]
 
 

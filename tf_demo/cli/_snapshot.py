@@ -412,7 +412,12 @@ def _check_nesting(text: str, source: str) -> None:
 
 def parse_snapshot(text: str, source: str = '<snapshot>') -> Snapshot:
     """Parse and validate snapshot ``text``; :class:`SnapshotError` names line and problem."""
-    if len(text.encode('utf-8', errors='surrogatepass')) > MAX_FILE_BYTES:
+    try:
+        size = len(text.encode('utf-8'))
+    except UnicodeEncodeError as error:  # only a str made in Python: a file decodes strictly
+        line = text.count('\n', 0, error.start) + 1
+        raise SnapshotError(f'{source}:{line}: not UTF-8 text (a lone surrogate)') from None
+    if size > MAX_FILE_BYTES:
         raise SnapshotError(f'{source}: file is larger than {MAX_FILE_BYTES} bytes')
     try:
         _check_nesting(text, source)
