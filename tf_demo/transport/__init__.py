@@ -40,10 +40,10 @@ from tf_demo.transport.backend import NodeConfigError
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import ROS_ARGS_USAGE
 from tf_demo.transport.ros_args import RosArgsError
-from tf_demo.transport.ros_args import set_global_ros_args
 
 __all__ = [
     'BackendError',
+    'ExternalShutdownException',
     'MultiThreadedExecutor',
     'MutuallyExclusiveCallbackGroup',
     'Node',
@@ -72,6 +72,7 @@ _BACKEND_MODULES = {
 _REEXPORTED = frozenset(
     {
         'Node',
+        'ExternalShutdownException',
         'SingleThreadedExecutor',
         'MultiThreadedExecutor',
         'ReentrantCallbackGroup',
@@ -100,16 +101,15 @@ def init(args: Sequence[str] | None = None) -> None:
     """
     Initialise the backend with the process arguments (``sys.argv`` when None).
 
-    The ``--ros-args`` are parsed here first, so bad ones raise :class:`RosArgsError` with
-    rcl's text in both worlds; in the standalone world ``--log-level`` is applied here.
+    Bad ``--ros-args`` raise :class:`RosArgsError` with rcl's text in both worlds: the
+    standalone world parses them here (and applies ``--log-level``); under rclpy, rcl parses
+    them once, in ``rclpy.init``, and its refusal is turned into the same error.
     """
     argv = list(sys.argv if args is None else args)
-    parsed = parse_ros_args(argv)
-    set_global_ros_args(parsed)
     if backend_name() == 'dds':
         from tf_demo.transport import logging as node_logging
 
-        for logger_name, level in parsed.log_levels:
+        for logger_name, level in parse_ros_args(argv).log_levels:
             if logger_name is None:
                 node_logging.set_default_logger_level(level)
             else:

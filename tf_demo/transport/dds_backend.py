@@ -1405,6 +1405,10 @@ def _reader_entities(node: DdsNode) -> list[_ReaderEntity]:
     ]
 
 
+class ExternalShutdownException(Exception):  # noqa: N818 - rclpy's name
+    """The context was shut down (rclpy's ``rclpy.executors.ExternalShutdownException``)."""
+
+
 class DdsExecutor:
     """
     Runs the callbacks of any number of nodes, scheduled as rclpy's ``Executor`` does.

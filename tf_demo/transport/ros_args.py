@@ -50,7 +50,6 @@ import itertools
 import math
 import re
 import sys
-import threading
 from typing import Any
 
 from tf_demo.core.files import InputFileError
@@ -74,13 +73,11 @@ __all__ = [
     'RosArgsError',
     'expand_topic_name',
     'explain_rcl_error',
-    'global_ros_args',
     'parse_param_value',
     'parse_ros_args',
     'rcl_scalar',
     'remove_ros_args',
     'resolve_node_arguments',
-    'set_global_ros_args',
 ]
 
 ROS_ARGS_FLAG = '--ros-args'
@@ -1082,20 +1079,3 @@ def expand_topic_name(name: str, node_name: str, namespace: str) -> str:
     if not expanded.startswith('/'):
         expanded = f'{base}/{expanded}'
     return expanded
-
-
-_GLOBAL_LOCK = threading.Lock()
-_global_args: RosArgs = RosArgs()
-
-
-def set_global_ros_args(arguments: RosArgs) -> None:
-    """Remember the arguments given to ``init`` for the process."""
-    global _global_args
-    with _GLOBAL_LOCK:
-        _global_args = arguments
-
-
-def global_ros_args() -> RosArgs:
-    """Return the arguments given to ``init`` (empty before it)."""
-    with _GLOBAL_LOCK:
-        return _global_args
