@@ -415,8 +415,8 @@ def parse_snapshot(text: str, source: str = '<snapshot>') -> Snapshot:
     try:
         size = len(text.encode('utf-8'))
     except UnicodeEncodeError as error:  # only a str made in Python: a file decodes strictly
-        line = text.count('\n', 0, error.start) + 1
-        raise SnapshotError(f'{source}:{line}: not UTF-8 text (a lone surrogate)') from None
+        bad_line = text.count('\n', 0, error.start) + 1
+        raise SnapshotError(f'{source}:{bad_line}: not UTF-8 text (a lone surrogate)') from None
     if size > MAX_FILE_BYTES:
         raise SnapshotError(f'{source}: file is larger than {MAX_FILE_BYTES} bytes')
     try:
