@@ -24,11 +24,11 @@ from tf_demo.cli._args import OLD_STYLE_WARNING
 from tf_demo.cli._args import parse_c_float
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._args import parse_static_transform_args
-from tf_demo.cli._args import rate_error
 from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._args import whole_number
 from tf_demo.core.math3d import quat_from_rpy
+from tf_demo.ros.node_helpers import rate_error
 
 
 @pytest.mark.parametrize(

@@ -41,7 +41,6 @@ from tf_demo.cli import tf_loader
 from tf_demo.cli import tf_monitor
 from tf_demo.cli import tf_saver
 from tf_demo.cli import view_frames
-from tf_demo.cli._args import MIN_RATE_HZ
 from tf_demo.cli._args import parse_c_float
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._args import parse_static_transform_args
@@ -52,6 +51,7 @@ from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotError
 from tf_demo.cli._snapshot import SnapshotTransform
 from tf_demo.nodes import non_ros_arguments
+from tf_demo.ros.node_helpers import MIN_RATE_HZ
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import RosArgsError
 import yaml

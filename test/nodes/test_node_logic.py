@@ -19,6 +19,7 @@ from __future__ import annotations
 import ast
 import math
 from pathlib import Path
+import re
 
 import pytest
 from tf_demo.msgs import geometry_msgs
@@ -226,3 +227,49 @@ def test_a_transforms_file_with_a_huge_or_non_finite_number_is_one_line(
     assert shown in message
     assert len(message) < 400
     assert '\n' not in message
+
+
+@pytest.mark.parametrize(
+    ('name', 'value', 'problem'),
+    [
+        ('rate', 1e-300, 'is too small: the period 1/rate must be at most 9223372036 s'),
+        ('rate', 0.0, 'must be a positive finite number of Hz'),
+        ('rate', math.inf, 'must be finite'),
+        ('period', 1e300, 'must be at most 9223372036 s'),
+        ('period', -1.0, 'must be > 0'),
+    ],
+)
+def test_timer_rates_and_periods_a_timer_cannot_hold_are_one_line(
+    name: str, value: float, problem: str
+) -> None:
+    """A rate of 1e-300 Hz (a period beyond int64 ns) is refused before a timer is made."""
+    from tf_demo.ros.node_helpers import as_period_s
+    from tf_demo.ros.node_helpers import as_rate_hz
+
+    check = as_rate_hz if name == 'rate' else as_period_s
+    with pytest.raises(NodeConfigError, match=re.escape(problem)):
+        check(name, value)
+
+
+@pytest.mark.parametrize('node', ['dynamic_tf_pub', 'tf_listener', 'joint_state_publisher'])
+def test_a_node_given_a_timer_it_cannot_run_exits_1_with_one_line(
+    node: str, world_env: dict[str, str]
+) -> None:
+    """``-p rate:=1e-300`` (or ``period:=1e300``): exit 1, one line naming it, no traceback."""
+    import subprocess
+
+    from conftest import executable_command
+
+    parameter = 'period:=1e300' if node == 'tf_listener' else 'rate:=1e-300'
+    completed = subprocess.run(
+        executable_command(node, '--ros-args', '-p', parameter),
+        env=world_env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert completed.returncode == 1, completed.stderr
+    assert 'Traceback' not in completed.stderr, completed.stderr
+    assert completed.stderr.strip().count('\n') == 0, completed.stderr
+    assert parameter.split(':=')[0] in completed.stderr

@@ -30,6 +30,7 @@ import re
 import sys
 
 from tf_demo.core.math3d import quat_from_rpy
+from tf_demo.ros.node_helpers import rate_error
 
 _C_FLOAT_PREFIX = re.compile(
     r"""
@@ -381,20 +382,6 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
             return result
         result.rate_hz = parsed[0]
     return result
-
-
-MAX_PERIOD_S = (2**63 - 1) / 1e9
-"""The longest period ``rclcpp::Rate`` can hold: int64 nanoseconds (about 292 years)."""
-MIN_RATE_HZ = 1.0 / MAX_PERIOD_S
-
-
-def rate_error(rate_hz: float) -> str | None:
-    """Why ``rate_hz`` is not a usable rate (positive, finite, period within int64 ns), or None."""
-    if not (rate_hz > 0.0 and math.isfinite(rate_hz)):
-        return 'must be a positive finite number of Hz'
-    if rate_hz < MIN_RATE_HZ:
-        return f'is too small: the period 1/rate must be at most {int(MAX_PERIOD_S)} s'
-    return None
 
 
 def count_argument(text: str) -> int:

@@ -86,7 +86,7 @@ def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
 
 
 def _rate(text: str) -> float:
-    from tf_demo.cli._args import rate_error
+    from tf_demo.ros.node_helpers import rate_error
 
     value = _number(text)
     problem = rate_error(value)

@@ -29,7 +29,7 @@ from typing import Any
 
 from tf_demo.ros.node_helpers import as_float
 from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import as_positive_float
+from tf_demo.ros.node_helpers import as_rate_hz
 from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.ros.node_helpers import now_ns
@@ -60,7 +60,7 @@ class DynamicTfPublisher(Node):  # type: ignore[misc]  # Node is the backend's c
         """Read the parameters and start the timer."""
         super().__init__(NODE_NAME)
         self.radius = declare_checked(self, 'radius', 1.0, as_float)
-        self.rate = declare_checked(self, 'rate', 20.0, as_positive_float)
+        self.rate = declare_checked(self, 'rate', 20.0, as_rate_hz)
         self.parent_frame = declare_checked(self, 'parent_frame', 'odom', as_frame)
         self.child_frame = declare_checked(self, 'child_frame', 'base_link', as_frame)
         require_distinct_frames(self.parent_frame, self.child_frame)

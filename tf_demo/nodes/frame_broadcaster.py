@@ -25,7 +25,7 @@ from __future__ import annotations
 import sys
 
 from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import as_positive_float
+from tf_demo.ros.node_helpers import as_period_s
 from tf_demo.ros.node_helpers import as_vector3
 from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.node_helpers import make_transform_stamped
@@ -50,7 +50,7 @@ class FrameBroadcaster(Node):  # type: ignore[misc]  # Node is the backend's cla
         require_distinct_frames(self.parent_frame, self.child_frame)
         self.translation = declare_checked(self, 'translation', [0.1, 0.2, 0.3], as_vector3)
         self.rotation = declare_checked(self, 'rotation', [0.0, 0.0, 0.0], rotation_from_values)
-        period = declare_checked(self, 'period', 0.5, as_positive_float)
+        period = declare_checked(self, 'period', 0.5, as_period_s)
         self.broadcaster = TransformBroadcaster(self)
         self.timer = self.create_timer(period, self.publish_once)
 

@@ -36,6 +36,7 @@ import sys
 from typing import Any
 
 from tf_demo.nodes import non_ros_arguments
+from tf_demo.ros.node_helpers import rate_error
 from tf_demo.urdf import parse_xacro_args
 from tf_demo.urdf import RobotModel
 from tf_demo.urdf import UrdfError
@@ -302,8 +303,13 @@ def _build_node_class() -> type:
                 k: float(p.value) for k, p in self.get_parameters_by_prefix('zeros').items()
             }
             rate = self._value('rate', 10)
-            if not isinstance(rate, (int, float)) or rate <= 0:
-                msg = f'rate must be a positive number of Hz, got {rate!r}'
+            problem = (
+                'must be a number of Hz'
+                if isinstance(rate, bool) or not isinstance(rate, (int, float))
+                else rate_error(float(rate))
+            )
+            if problem is not None:
+                msg = f'rate {problem}, got {rate!r}'
                 raise JointStatePublisherConfigError(msg)
             self._delta = float(self._value('delta', 0.0))
             self._table = JointStateTable()

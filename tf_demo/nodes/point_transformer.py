@@ -28,7 +28,7 @@ from typing import Any
 from tf_demo.core.exceptions import TransformException
 from tf_demo.ros.buffer import Buffer
 from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import as_positive_float
+from tf_demo.ros.node_helpers import as_period_s
 from tf_demo.ros.node_helpers import as_vector3
 from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.transform_listener import TransformListener
@@ -58,7 +58,7 @@ class PointTransformer(Node):  # type: ignore[misc]  # Node is the backend's cla
         self.source_frame = declare_checked(self, 'source_frame', 'base_link', as_frame)
         self.target_frame = declare_checked(self, 'target_frame', 'map', as_frame)
         x, y, z = declare_checked(self, 'point', [1.0, 0.0, 0.0], as_vector3)
-        period = declare_checked(self, 'period', 1.0, as_positive_float)
+        period = declare_checked(self, 'period', 1.0, as_period_s)
         self.point = geometry_msgs.PointStamped()
         self.point.header.frame_id = self.source_frame
         self.point.point.x, self.point.point.y, self.point.point.z = x, y, z

@@ -29,7 +29,7 @@ from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.ros.buffer import Buffer
 from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import as_positive_float
+from tf_demo.ros.node_helpers import as_period_s
 from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.transform_listener import TransformListener
 from tf_demo.transport import Node
@@ -61,7 +61,7 @@ class TfListenerNode(Node):  # type: ignore[misc]  # Node is the backend's class
         super().__init__(NODE_NAME)
         self.target_frame = declare_checked(self, 'target_frame', 'odom', as_frame)
         self.source_frame = declare_checked(self, 'source_frame', 'camera_link', as_frame)
-        period = declare_checked(self, 'period', 1.0, as_positive_float)
+        period = declare_checked(self, 'period', 1.0, as_period_s)
         self.tf_buffer = Buffer(node=self)
         self.tf_listener = TransformListener(self.tf_buffer, self)
         self.timer = self.create_timer(period, self.on_timer)

@@ -33,17 +33,22 @@ from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.transport.backend import NodeConfigError
 
 __all__ = [
+    'MAX_PERIOD_S',
+    'MIN_RATE_HZ',
     'NodeConfigError',
     'Quat',
     'Vec3',
     'as_float',
     'as_frame',
+    'as_period_s',
     'as_positive_float',
+    'as_rate_hz',
     'as_vector3',
     'declare_checked',
     'declare_flexible',
     'make_transform_stamped',
     'now_ns',
+    'rate_error',
     'require_distinct_frames',
     'rotation_from_values',
 ]
@@ -99,6 +104,39 @@ def as_positive_float(name: str, value: Any) -> float:
     number = as_float(name, value)
     if number <= 0.0:
         msg = f'parameter {name!r} must be > 0, got {_show(value)}'
+        raise NodeConfigError(msg)
+    return number
+
+
+MAX_PERIOD_S = (2**63 - 1) / 1e9
+"""The longest timer period (``rclcpp::Rate``, rclpy timers): int64 nanoseconds, ~292 years."""
+MIN_RATE_HZ = 1.0 / MAX_PERIOD_S
+
+
+def rate_error(rate_hz: float) -> str | None:
+    """Why ``rate_hz`` is not a usable rate (positive, finite, period within int64 ns), or None."""
+    if not (rate_hz > 0.0 and math.isfinite(rate_hz)):
+        return 'must be a positive finite number of Hz'
+    if rate_hz < MIN_RATE_HZ:
+        return f'is too small: the period 1/rate must be at most {int(MAX_PERIOD_S)} s'
+    return None
+
+
+def as_rate_hz(name: str, value: Any) -> float:
+    """Return ``value`` as a rate a timer can run at (see :func:`rate_error`), or raise."""
+    number = as_float(name, value)
+    problem = rate_error(number)
+    if problem is not None:
+        msg = f'parameter {name!r} {problem}, got {_show(value)}'
+        raise NodeConfigError(msg)
+    return number
+
+
+def as_period_s(name: str, value: Any) -> float:
+    """Return ``value`` as a timer period in seconds: > 0 and within int64 nanoseconds."""
+    number = as_positive_float(name, value)
+    if number > MAX_PERIOD_S:
+        msg = f'parameter {name!r} must be at most {int(MAX_PERIOD_S)} s, got {_show(value)}'
         raise NodeConfigError(msg)
     return number
 
