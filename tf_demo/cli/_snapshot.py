@@ -54,9 +54,9 @@ import math
 import os
 from typing import Any
 
-from tf_demo.cli._output import write_text_atomically
 from tf_demo.core.files import InputFileError
 from tf_demo.core.files import read_text_file
+from tf_demo.core.files import write_text_atomically
 import yaml
 
 SCHEMA_KEY = 'tf_demo_transforms'

@@ -45,11 +45,11 @@ from tf_demo.cli._live import print_error
 from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import ToolError
-from tf_demo.cli._output import output_path_error
-from tf_demo.cli._output import OutputFileError
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotTransform
 from tf_demo.cli._snapshot import write_snapshot
+from tf_demo.core.files import output_path_error
+from tf_demo.core.files import OutputFileError
 from tf_demo.core.math3d import quat_normalize
 
 TOOL = 'tf_saver'

@@ -39,12 +39,12 @@ from tf_demo.cli._live import print_error
 from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import ToolError
-from tf_demo.cli._output import OutputFileError
-from tf_demo.cli._output import write_text_atomically
 from tf_demo.cli._snapshot import frames_yaml_data
 from tf_demo.cli._snapshot import read_snapshot
 from tf_demo.cli._snapshot import SnapshotError
 from tf_demo.cli.formatting import generate_dot
+from tf_demo.core.files import OutputFileError
+from tf_demo.core.files import write_text_atomically
 import yaml
 
 TOOL = 'view_frames'

@@ -13,16 +13,32 @@
 # limitations under the License.
 
 """
-The one way the package reads a file a user names: bounded, regular files only, UTF-8.
+The one way the package reads and writes a file a user names.
 
-``/dev/zero``, a FIFO or a 10 GB file must not be read until memory runs out, and a file
-that is not UTF-8 must not end in a traceback. Every failure is an :class:`InputFileError`
-whose message starts with the path (and, for bad text, the line).
+Reading: bounded, regular files only, UTF-8. ``/dev/zero``, a FIFO or a 10 GB file must not be
+read until memory runs out, and a file that is not UTF-8 must not end in a traceback. Every
+failure is an :class:`InputFileError` whose message starts with the path (and, for bad text,
+the line).
+
+Writing (``tf_saver -o``, ``view_frames -o``), so that ``-o`` can never damage what it points
+at; failures are :class:`OutputFileError`, whose message starts with the path the user gave.
+
+- Only regular files are written. A device (``/dev/full``, ``/dev/null``), FIFO, socket or
+  directory is refused before anything is written; renaming over it would turn a device node
+  into a regular file when run as root.
+- A symbolic link is followed: the file it points at is replaced and the link stays a link (as
+  shell redirection and editors that preserve links do). A link to something that is not a
+  regular file is refused like that thing; a dangling link creates the file it names.
+- The new content is written to a temporary file in the target's folder, flushed to disk and
+  renamed over the target, so a reader sees the old file or the new one, never half of one. An
+  existing file keeps its permission bits (and, where allowed, its owner).
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
+import secrets
 import stat
 
 #: Default size limit for a text file the package reads (URDF, params, snapshot, transforms).
@@ -92,3 +108,87 @@ def decode_utf8(data: bytes, source: str) -> str:
 def read_text_file(path: str | os.PathLike[str], max_bytes: int = MAX_TEXT_FILE_BYTES) -> str:
     """Read the UTF-8 text of the regular file at ``path``, at most ``max_bytes`` long."""
     return decode_utf8(read_bytes_file(path, max_bytes), os.fspath(path))
+
+
+_TEMPORARY_ATTEMPTS = 100
+
+
+class OutputFileError(Exception):
+    """A path that cannot be written as asked; the message names the path and the reason."""
+
+
+def output_path_error(path: str | os.PathLike[str]) -> str | None:
+    """Return why ``path`` cannot be written (see the module rules), or None if it can be."""
+    source = os.fspath(path)
+    if not source:
+        return 'the output path is empty'
+    try:
+        _existing_status(source, os.path.realpath(source))
+    except OutputFileError as error:
+        return str(error)
+    return None
+
+
+def _existing_status(source: str, target: str) -> os.stat_result | None:
+    """Stat the resolved ``target``: None if it does not exist, else a regular file's status."""
+    try:
+        status = os.stat(target)
+    except FileNotFoundError:
+        return None
+    except OSError as error:
+        raise OutputFileError(f'{source}: cannot write ({error.strerror})') from None
+    if stat.S_ISDIR(status.st_mode):
+        raise OutputFileError(f'{source}: is a directory, not a file')
+    if not stat.S_ISREG(status.st_mode):
+        kind = 'a device, FIFO or socket'
+        raise OutputFileError(f'{source}: not a regular file ({kind}); nothing was written')
+    return status
+
+
+def _create_temporary(target: str) -> tuple[int, str]:
+    """Create a new, empty temporary file next to ``target``; return (descriptor, path)."""
+    directory, name = os.path.split(target)
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, 'O_NOFOLLOW', 0)
+    flags |= getattr(os, 'O_CLOEXEC', 0)
+    for _ in range(_TEMPORARY_ATTEMPTS):
+        temporary = os.path.join(directory, f'.{name}.{secrets.token_hex(6)}.tmp')
+        try:
+            return os.open(temporary, flags, 0o666), temporary
+        except FileExistsError:
+            continue
+    msg = f'no free temporary file name next to {target}'
+    raise FileExistsError(msg)
+
+
+def write_text_atomically(path: str | os.PathLike[str], text: str) -> None:
+    """Replace the regular file at ``path`` (or create it) with UTF-8 ``text``, atomically."""
+    source = os.fspath(path)
+    if not source:
+        msg = 'the output path is empty'
+        raise OutputFileError(msg)
+    target = os.path.realpath(source)
+    status = _existing_status(source, target)
+    try:
+        descriptor, temporary = _create_temporary(target)
+    except OSError as error:
+        reason = error.strerror or str(error)
+        raise OutputFileError(f'{source}: cannot write ({reason})') from None
+    try:
+        with os.fdopen(descriptor, 'w', encoding='utf-8') as handle:
+            handle.write(text)
+            handle.flush()
+            if status is not None:
+                os.fchmod(handle.fileno(), stat.S_IMODE(status.st_mode))
+                with contextlib.suppress(OSError):  # only root may give a file away
+                    os.fchown(handle.fileno(), status.st_uid, status.st_gid)
+            os.fsync(handle.fileno())
+        # Checked again just before the rename: the target may have changed while writing.
+        _existing_status(source, target)
+        os.replace(temporary, target)
+    except BaseException as error:
+        with contextlib.suppress(OSError):
+            os.unlink(temporary)
+        if isinstance(error, OSError):
+            reason = error.strerror or str(error)
+            raise OutputFileError(f'{source}: cannot write ({reason})') from None
+        raise

@@ -27,13 +27,15 @@ from pathlib import Path
 import stat
 
 import pytest
-from tf_demo.cli._output import output_path_error
-from tf_demo.cli._output import OutputFileError
-from tf_demo.cli._output import write_text_atomically
 from tf_demo.cli._snapshot import read_snapshot
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotTransform
 from tf_demo.cli._snapshot import write_snapshot
+from tf_demo.core.files import InputFileError
+from tf_demo.core.files import output_path_error
+from tf_demo.core.files import OutputFileError
+from tf_demo.core.files import read_text_file
+from tf_demo.core.files import write_text_atomically
 
 SNAPSHOT = Snapshot(
     transforms=(SnapshotTransform('map', 'odom', (1.0, 2.0, 3.0), (0.0, 0.0, 0.0, 1.0)),)
@@ -161,3 +163,49 @@ def test_a_missing_folder_is_one_clear_error(tmp_path: Path) -> None:
     """A path in a folder that does not exist: OutputFileError naming the path and reason."""
     with pytest.raises(OutputFileError, match=r'nowhere/tf.yaml: cannot write \(No such file'):
         write_snapshot(tmp_path / 'nowhere' / 'tf.yaml', SNAPSHOT)
+
+
+# -- reading -----------------------------------------------------------------------------------
+
+
+def test_reading_refuses_what_is_not_a_regular_file(tmp_path: Path) -> None:
+    """/dev/zero, a FIFO with no writer (no hang) and a folder: one line each, nothing read."""
+    fifo = tmp_path / 'pipe'
+    os.mkfifo(fifo)
+    for path, reason in (
+        ('/dev/zero', 'not a regular file'),
+        (str(fifo), 'not a regular file'),
+        (str(tmp_path), 'is a directory'),
+        (str(tmp_path / 'missing.urdf'), 'no such file'),
+    ):
+        with pytest.raises(InputFileError) as caught:
+            read_text_file(path)
+        assert str(caught.value).startswith(f'{path}: {reason}'), caught.value
+
+
+def test_reading_is_bounded_and_names_the_bad_utf8_line(tmp_path: Path) -> None:
+    """A file over the limit is refused with its size; bad UTF-8 names the line it is on."""
+    big = tmp_path / 'big.yaml'
+    big.write_bytes(b'x' * 5000)
+    with pytest.raises(InputFileError, match='larger than 4096 bytes'):
+        read_text_file(big, 4096)
+    assert read_text_file(big, 5000) == 'x' * 5000
+    bad = tmp_path / 'bad.yaml'
+    bad.write_bytes(b'a: 1\nb: 2\nc: \xff\n')
+    with pytest.raises(InputFileError, match=r'bad\.yaml:3: not UTF-8 text'):
+        read_text_file(bad)
+
+
+def test_reading_a_small_file_allocates_little(tmp_path: Path) -> None:
+    """No buffer of the size limit is allocated for a three-byte file (a 16 MiB peak before)."""
+    import tracemalloc
+
+    small = tmp_path / 'small.txt'
+    small.write_text('abc', encoding='utf-8')
+    tracemalloc.start()
+    try:
+        assert read_text_file(small) == 'abc'
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 1024 * 1024, peak
