@@ -129,31 +129,6 @@ def _extrapolation_error(code: int, text: str) -> ExtrapolationException:
     return ExtrapolationException(text)
 
 
-def _matrix_times(a: math3d.Matrix3, b: math3d.Matrix3) -> math3d.Matrix3:
-    """Return ``a * b`` with tf2's ``Matrix3x3`` operation order."""
-    rows = [
-        (
-            r[0] * b[0][0] + r[1] * b[1][0] + r[2] * b[2][0],
-            r[0] * b[0][1] + r[1] * b[1][1] + r[2] * b[2][1],
-            r[0] * b[0][2] + r[1] * b[1][2] + r[2] * b[2][2],
-        )
-        for r in a
-    ]
-    return (rows[0], rows[1], rows[2])
-
-
-def _matrix_apply(m: math3d.Matrix3, v: Vec3) -> Vec3:
-    return (
-        m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
-        m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
-        m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2],
-    )
-
-
-def _transpose(m: math3d.Matrix3) -> math3d.Matrix3:
-    return ((m[0][0], m[1][0], m[2][0]), (m[0][1], m[1][1], m[2][1]), (m[0][2], m[1][2], m[2][2]))
-
-
 # Outcomes of :func:`_accumulate_side`.
 _SIDE_REACHED_STOP = 0
 _SIDE_NO_CACHE = 1
@@ -796,8 +771,8 @@ class BufferCore:
             t1, q1, _ = self._lookup_locked(fixed, source, source_time_ns)
             t2, q2, stamp = self._lookup_locked(target, fixed, target_time_ns)
         basis2 = math3d.matrix_from_quat(q2)
-        basis = _matrix_times(basis2, math3d.matrix_from_quat(q1))
-        ox, oy, oz = _matrix_apply(basis2, t1)
+        basis = math3d.matrix_times(basis2, math3d.matrix_from_quat(q1))
+        ox, oy, oz = math3d.matrix_apply(basis2, t1)
         return TransformResult(
             (ox + t2[0], oy + t2[1], oz + t2[2]), math3d.quat_from_matrix(basis), stamp
         )
@@ -936,7 +911,9 @@ class BufferCore:
             ref_t, ref_q, _ = self._lookup_locked(observation, tracking, _time_from_sec(time_s))
         start_basis = math3d.matrix_from_quat(start_q)
         delta = math3d.quat_from_matrix(
-            _matrix_times(_transpose(start_basis), math3d.matrix_from_quat(end_q))
+            math3d.matrix_times(
+                math3d.matrix_transpose(start_basis), math3d.matrix_from_quat(end_q)
+            )
         )
         w = delta[3]
         s_squared = 1.0 - w * w
@@ -946,7 +923,7 @@ class BufferCore:
             s = math.sqrt(s_squared)
             axis = (delta[0] / s, delta[1] / s, delta[2] / s)
         angle = 2.0 * math.acos(max(-1.0, min(1.0, w)))
-        ox, oy, oz = _matrix_apply(start_basis, axis)
+        ox, oy, oz = math3d.matrix_apply(start_basis, axis)
         scale = angle / corrected
         twist_rot = (ox * scale, oy * scale, oz * scale)
         twist_vel = (
@@ -955,8 +932,8 @@ class BufferCore:
             (end_t[2] - start_t[2]) / corrected,
         )
         ref_basis = math3d.matrix_from_quat(ref_q)
-        out_rot = _matrix_apply(ref_basis, twist_rot)
-        vx, vy, vz = _matrix_apply(ref_basis, twist_vel)
+        out_rot = math3d.matrix_apply(ref_basis, twist_rot)
+        vx, vy, vz = math3d.matrix_apply(ref_basis, twist_vel)
         px, py, pz = ref_t
         cross = (
             py * out_rot[2] - pz * out_rot[1],

@@ -62,9 +62,13 @@ __all__ = [
     'compose_batch',
     'homogeneous_from_transform',
     'invert',
+    'lerp',
+    'matrix_apply',
     'matrix_from_quat',
     'matrix_from_quat_batch',
     'matrix_from_rpy',
+    'matrix_times',
+    'matrix_transpose',
     'quat_conjugate',
     'quat_from_axis_angle',
     'quat_from_matrix',
@@ -143,6 +147,16 @@ def invert(t: Vec3, q: Quat) -> tuple[Vec3, Quat]:
     """Invert a transform: ``a_T_b`` gives ``b_T_a`` = ``(-R(conj q) * t, conj q)``."""
     q_inv = (-q[0], -q[1], -q[2], q[3])
     return rotate_vector(q_inv, (-t[0], -t[1], -t[2])), q_inv
+
+
+def lerp(v0: Vec3, v1: Vec3, ratio: float) -> Vec3:
+    """Linear interpolation ``(1 - ratio) * v0 + ratio * v1``, as tf2's ``lerp``."""
+    keep = 1.0 - ratio
+    return (
+        keep * v0[0] + ratio * v1[0],
+        keep * v0[1] + ratio * v1[1],
+        keep * v0[2] + ratio * v1[2],
+    )
 
 
 def slerp(q0: Quat, q1: Quat, ratio: float) -> Quat:
@@ -292,6 +306,33 @@ def matrix_from_quat(q: Quat) -> Matrix3:
         (xy + wz, 1.0 - (xx + zz), yz - wx),
         (xz - wy, yz + wx, 1.0 - (xx + yy)),
     )
+
+
+def matrix_times(a: Matrix3, b: Matrix3) -> Matrix3:
+    """Return the matrix product ``a * b`` with tf2's ``Matrix3x3`` operation order."""
+    rows = [
+        (
+            r[0] * b[0][0] + r[1] * b[1][0] + r[2] * b[2][0],
+            r[0] * b[0][1] + r[1] * b[1][1] + r[2] * b[2][1],
+            r[0] * b[0][2] + r[1] * b[1][2] + r[2] * b[2][2],
+        )
+        for r in a
+    ]
+    return (rows[0], rows[1], rows[2])
+
+
+def matrix_apply(m: Matrix3, v: Vec3) -> Vec3:
+    """Return the matrix-vector product ``m * v`` (tf2's ``Matrix3x3 * Vector3``)."""
+    return (
+        m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
+        m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
+        m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2],
+    )
+
+
+def matrix_transpose(m: Matrix3) -> Matrix3:
+    """Return the transpose of ``m`` (the inverse of a rotation matrix)."""
+    return ((m[0][0], m[1][0], m[2][0]), (m[0][1], m[1][1], m[2][1]), (m[0][2], m[1][2], m[2][2]))
 
 
 def quat_from_matrix(m: Matrix3) -> Quat:

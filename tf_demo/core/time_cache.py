@@ -39,11 +39,12 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left
 from bisect import bisect_right
-import math
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
 import numpy as np
+from tf_demo.core.math3d import lerp
+from tf_demo.core.math3d import slerp
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -82,8 +83,6 @@ Sample = tuple[float, float, float, float, float, float, float, int]
 CacheView = tuple[int, int, float, int, int, 'array[int]', list[Sample]]
 
 _NS_PER_S = 1_000_000_000
-_acos = math.acos
-_sin = math.sin
 
 
 class TransformStorage(NamedTuple):
@@ -272,11 +271,11 @@ class TimeCache:
         """
         Return the (possibly interpolated) sample at ``time_ns`` (0 = newest), or None.
 
-        This is tf2's ``findClosest`` plus ``interpolate``: linear in translation, tf2's slerp in
-        rotation, never across a parent change (the older sample is returned instead).  The
-        stored rotations are unit quaternions, so slerp skips tf2's division by their norms
-        (a difference of the order of 1e-16).  Use :meth:`explain_failure` for tf2's error text
-        when None is returned.
+        This is tf2's ``findClosest`` plus ``interpolate``: :func:`~tf_demo.core.math3d.lerp` of
+        the translation, :func:`~tf_demo.core.math3d.slerp` of the rotation, never across a
+        parent change (the older sample is returned instead).  The lookup walk inlines the same
+        step (``buffer_core._accumulate_side``).  Use :meth:`explain_failure` for tf2's error
+        text when None is returned.
         """
         stamps = self._stamps
         end = len(stamps)
@@ -301,38 +300,9 @@ class TimeCache:
             return one
         one_stamp = stamps[index]
         ratio = float(time_ns - one_stamp) / float(stamps[index + 1] - one_stamp)
-        keep = 1.0 - ratio
-        dot = x0 * x1 + y0 * y1 + z0 * z1 + w0 * w1
-        if dot < 0:
-            theta = _acos(-dot if -dot < 1.0 else 1.0)
-            if theta != 0.0:
-                d = 1.0 / _sin(theta)
-                s0 = _sin(keep * theta) * d
-                s1 = -_sin(ratio * theta) * d
-                x0 = x0 * s0 + x1 * s1
-                y0 = y0 * s0 + y1 * s1
-                z0 = z0 * s0 + z1 * s1
-                w0 = w0 * s0 + w1 * s1
-        else:
-            theta = _acos(dot if dot < 1.0 else 1.0)
-            if theta != 0.0:
-                d = 1.0 / _sin(theta)
-                s0 = _sin(keep * theta) * d
-                s1 = _sin(ratio * theta) * d
-                x0 = x0 * s0 + x1 * s1
-                y0 = y0 * s0 + y1 * s1
-                z0 = z0 * s0 + z1 * s1
-                w0 = w0 * s0 + w1 * s1
-        return (
-            keep * tx0 + ratio * tx1,
-            keep * ty0 + ratio * ty1,
-            keep * tz0 + ratio * tz1,
-            x0,
-            y0,
-            z0,
-            w0,
-            parent,
-        )
+        tx, ty, tz = lerp((tx0, ty0, tz0), (tx1, ty1, tz1), ratio)
+        x, y, z, w = slerp((x0, y0, z0, w0), (x1, y1, z1, w1), ratio)
+        return (tx, ty, tz, x, y, z, w, parent)
 
     def get_parent(self, time_ns: int) -> int:
         """Return the parent id at ``time_ns`` (older neighbour's parent), or 0 on failure."""
