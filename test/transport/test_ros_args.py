@@ -27,6 +27,7 @@ from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import remove_ros_args
 from tf_demo.transport.ros_args import resolve_node_arguments
 from tf_demo.transport.ros_args import RosArgsError
+from tf_demo.transport.ros_args import split_ros_args
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 
@@ -50,6 +51,56 @@ def test_user_arguments_outside_ros_args_are_kept_in_order() -> None:
     assert parsed.user_args == ('prog', 'a', '--flag', 'b')
     assert remove_ros_args(argv) == ['prog', 'a', '--flag', 'b']
     assert len(parsed.remap_rules) == 1
+
+
+# A flag that takes a value takes the next token, ``--`` and ``--ros-args`` included (rcl).
+SPLITS = [
+    (['a', '--ros-args', '-r', 'x:=y', '--', 'b'], ['a', 'b'], ['--ros-args', '-r', 'x:=y']),
+    (['--ros-args', '-r', '--', 'b'], [], ['--ros-args', '-r', '--', 'b']),
+    (['--ros-args', '-e', '--'], [], ['--ros-args', '-e', '--']),
+    (
+        ['--ros-args', '--log-config-file', '--', 'a'],
+        [],
+        ['--ros-args', '--log-config-file', '--', 'a'],
+    ),
+    (['--ros-args', '-r', '--ros-args', '--', 'b'], ['b'], ['--ros-args', '-r', '--ros-args']),
+    (
+        ['--ros-args', '--ros-args', '-p', 'a:=1', '--', '--', 'c'],
+        ['--', 'c'],
+        ['--ros-args', '--ros-args', '-p', 'a:=1'],
+    ),
+    (['--', 'a'], ['--', 'a'], []),
+    (
+        ['--ros-args', '--enable-stdout-logs', '--', 'z'],
+        ['z'],
+        ['--ros-args', '--enable-stdout-logs'],
+    ),
+    (['--ros-args', '-p'], [], ['--ros-args', '-p']),
+]
+
+
+@pytest.mark.parametrize(('argv', 'user', 'ros'), SPLITS)
+def test_split_ros_args_walks_as_rcl(argv: list[str], user: list[str], ros: list[str]) -> None:
+    """Sections run to ``--`` or the end; a value flag's value is never a section's end."""
+    assert split_ros_args(argv) == (user, ros)
+
+
+@pytest.mark.rclpy_world
+@pytest.mark.parametrize(('argv', 'user', 'ros'), SPLITS)
+def test_split_ros_args_agrees_with_rclpy(
+    argv: list[str], user: list[str], ros: list[str]
+) -> None:
+    """The real rclpy.utilities.remove_ros_args keeps the same user arguments, or refuses."""
+    from rclpy.utilities import remove_ros_args as rclpy_remove_ros_args
+
+    del ros
+    try:
+        kept = rclpy_remove_ros_args(['prog', *argv])
+    except RuntimeError:  # rcl refuses the ROS arguments (RCLInvalid/UnknownROSArgsError)
+        with pytest.raises(RosArgsError):
+            parse_ros_args(['prog', *argv])
+    else:
+        assert kept == ['prog', *user]
 
 
 @pytest.mark.parametrize(

@@ -31,6 +31,7 @@ import sys
 
 from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.ros.node_helpers import rate_error
+from tf_demo.transport import ros_args
 
 _C_FLOAT_PREFIX = re.compile(
     r"""
@@ -53,22 +54,10 @@ def split_ros_args(argv: Sequence[str] | None = None) -> tuple[list[str], list[s
     """
     Split ``argv`` (default: ``sys.argv[1:]``) into (tool arguments, ROS arguments).
 
-    Every ``--ros-args`` section runs to the next ``--`` or the end, as in rclcpp.
+    rcl's rules (:func:`tf_demo.transport.ros_args.split_ros_args`): every ``--ros-args``
+    section runs to the next ``--`` or the end, as in rclcpp.
     """
-    tool_args: list[str] = []
-    ros_args: list[str] = []
-    in_ros = False
-    for token in sys.argv[1:] if argv is None else argv:
-        if token == '--ros-args':
-            in_ros = True
-            ros_args.append(token)
-        elif in_ros and token == '--':
-            in_ros = False
-        elif in_ros:
-            ros_args.append(token)
-        else:
-            tool_args.append(token)
-    return tool_args, ros_args
+    return ros_args.split_ros_args(sys.argv[1:] if argv is None else argv)
 
 
 def parse_c_float(text: str) -> tuple[float, int] | None:

@@ -18,16 +18,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from tf_demo.transport.ros_args import split_ros_args
+
 
 def non_ros_arguments(args: Sequence[str]) -> list[str]:
-    """Return the arguments outside ``--ros-args ... [--]`` blocks, in order."""
-    plain: list[str] = []
-    inside = False
-    for arg in args:
-        if arg == '--ros-args':
-            inside = True
-        elif arg == '--' and inside:
-            inside = False
-        elif not inside:
-            plain.append(arg)
-    return plain
+    """Return the arguments outside ``--ros-args ... [--]`` sections, in order (rcl's rules)."""
+    return split_ros_args(args)[0]

@@ -16,7 +16,8 @@
 The ``--ros-args`` command line, parsed as rcl parses it (``rcl/src/rcl/arguments.c``).
 
 Arguments between ``--ros-args`` and ``--`` (or the end) are ROS arguments; everything else is
-returned unchanged as the user's arguments. Understood inside a ``--ros-args`` section:
+returned unchanged as the user's arguments; :func:`split_ros_args` is the package's one splitter
+(the tools and nodes call it). Understood inside a ``--ros-args`` section:
 
 * ``-p``/``--param [node:]name:=value``: a parameter override, typed by rcl's own YAML rules
   (``rcl_yaml_param_parser``, see :func:`rcl_scalar`): ``true``/``y``/``on`` are bools, what
@@ -78,6 +79,7 @@ __all__ = [
     'rcl_scalar',
     'remove_ros_args',
     'resolve_node_arguments',
+    'split_ros_args',
 ]
 
 ROS_ARGS_FLAG = '--ros-args'
@@ -92,6 +94,16 @@ _LOG_SWITCHES = frozenset(
     f'--{state}-{what}-logs'
     for state in ('enable', 'disable')
     for what in ('stdout', 'rosout', 'external-lib')
+)
+_VALUE_FLAGS = frozenset(
+    (
+        *_PARAM_FLAGS,
+        *_REMAP_FLAGS,
+        *_ENCLAVE_FLAGS,
+        _PARAMS_FILE_FLAG,
+        _LOG_LEVEL_FLAG,
+        _LOG_CONFIG_FLAG,
+    )
 )
 
 ROS_ARGS_USAGE = (
@@ -250,7 +262,7 @@ def parse_ros_args(argv: Sequence[str]) -> RosArgs:
     :raises RosArgsError: with rcl's text for a flag without its value, a malformed rule, an
         unreadable params file or unknown ROS arguments.
     """
-    user_args: list[str] = []
+    user_args, ros_tokens = split_ros_args(argv)
     sources: list[ParamRule | ParamsFile] = []
     remaps: list[RemapRule] = []
     log_levels: list[tuple[str | None, LoggingSeverity]] = []
@@ -259,22 +271,9 @@ def parse_ros_args(argv: Sequence[str]) -> RosArgs:
     enclave: str | None = None
     switches: list[str] = []
     files: list[str] = []
-    in_ros_args = False
-    items = iter(enumerate(argv))
-    for _index, arg in items:
-        if not isinstance(arg, str):
-            msg = f'Arguments must be strings, got {type(arg).__name__}: {arg!r}'
-            raise RosArgsError(msg)
-        if not in_ros_args:
-            if arg == ROS_ARGS_FLAG:
-                in_ros_args = True
-            else:
-                user_args.append(arg)
-            continue
+    items = iter(ros_tokens)
+    for arg in items:
         if arg == ROS_ARGS_FLAG:
-            continue
-        if arg == ROS_ARGS_END:
-            in_ros_args = False
             continue
         if arg in _PARAM_FLAGS:
             value = _flag_value(items, arg, 'No parameter override rule found.')
@@ -287,7 +286,7 @@ def parse_ros_args(argv: Sequence[str]) -> RosArgs:
             sources.append(_wrap(arg, value, 'params file', _parse_params_file))
             files.append(value)
         elif arg == _LOG_LEVEL_FLAG:
-            level_text = _next_value(items)
+            level_text = next(items, None)
             if level_text is None:
                 msg = f"Couldn't parse trailing log level flag: '{arg}'. No log level provided."
                 raise RosArgsError(msg)
@@ -316,18 +315,51 @@ def parse_ros_args(argv: Sequence[str]) -> RosArgs:
     )
 
 
+def split_ros_args(argv: Sequence[str]) -> tuple[list[str], list[str]]:
+    """
+    Split ``argv`` into (the user's arguments, the ROS arguments), as rcl walks a command line.
+
+    Every ``--ros-args`` section runs to the next ``--`` or the end; a flag that takes a value
+    (``-p``, ``-r``, ``--params-file``, ``--log-level``, ``--log-config-file``, ``-e``) takes the
+    next token whatever it is, ``--`` included. The ROS arguments keep their ``--ros-args``
+    markers and drop the closing ``--``s, so ``init(args=[prog, *ros])`` sees what rcl would.
+    Nothing is validated here except that every argument is a string (see
+    :func:`parse_ros_args`).
+
+    :raises RosArgsError: for an argument that is not a ``str``.
+    """
+    user_args: list[str] = []
+    ros_args: list[str] = []
+    in_ros_args = False
+    takes_value = False
+    for arg in argv:
+        if not isinstance(arg, str):
+            msg = f'Arguments must be strings, got {type(arg).__name__}: {arg!r}'
+            raise RosArgsError(msg)
+        if takes_value:
+            ros_args.append(arg)
+            takes_value = False
+        elif not in_ros_args:
+            if arg == ROS_ARGS_FLAG:
+                in_ros_args = True
+                ros_args.append(arg)
+            else:
+                user_args.append(arg)
+        elif arg == ROS_ARGS_END:
+            in_ros_args = False
+        else:
+            ros_args.append(arg)
+            takes_value = arg in _VALUE_FLAGS
+    return user_args, ros_args
+
+
 def remove_ros_args(argv: Sequence[str]) -> list[str]:
     """Return ``argv`` without its ROS arguments (``rclpy.utilities.remove_ros_args``)."""
     return list(parse_ros_args(argv).user_args)
 
 
-def _next_value(items: Iterator[tuple[int, str]]) -> str | None:
-    entry = next(items, None)
-    return None if entry is None else entry[1]
-
-
-def _flag_value(items: Iterator[tuple[int, str]], flag: str, missing: str) -> str:
-    value = _next_value(items)
+def _flag_value(items: Iterator[str], flag: str, missing: str) -> str:
+    value = next(items, None)
     if value is None:
         msg = f"Couldn't parse trailing {flag} flag. {missing}"
         raise RosArgsError(msg)
