@@ -70,68 +70,44 @@ def _accumulate(
     broadcasts.  The results are column-major views, so each component is contiguous.
     """
     if link.shape[0] == 1 and acc_t.shape[0] == 1 and acc_q.shape[0] == 1:
-        return _accumulate_one(link[0].tolist(), acc_t[0].tolist(), acc_q[0].tolist())
-    lx, ly, lz, px, py, pz, pw = (link[:, i] for i in range(7))
-    sx, sy, sz = acc_t[:, 0], acc_t[:, 1], acc_t[:, 2]
-    ux = 2.0 * (py * sz - pz * sy)
-    uy = 2.0 * (pz * sx - px * sz)
-    uz = 2.0 * (px * sy - py * sx)
+        one = _compose(_link(link[0].tolist()), _link(acc_t[0].tolist() + acc_q[0].tolist()))
+        return np.array([one[:3]]), np.array([one[3:]])
     rows = max(link.shape[0], acc_t.shape[0], acc_q.shape[0])
     out = np.empty((7, rows))
-    np.add(sx + pw * ux + (py * uz - pz * uy), lx, out=out[0])
-    np.add(sy + pw * uy + (pz * ux - px * uz), ly, out=out[1])
-    np.add(sz + pw * uz + (px * uy - py * ux), lz, out=out[2])
+    columns = _link(list(link.T))
     if acc_q.shape[0] == 1 and link.shape[0] == rows:
         # link * q for one fixed q is linear in the link's quaternion: one matrix product.
-        qx, qy, qz, qw = acc_q[0].tolist()
-        right = np.array(
-            [
-                [qw, qz, -qy, qx],
-                [-qz, qw, qx, qy],
-                [qy, -qx, qw, qz],
-                [-qx, -qy, -qz, qw],
-            ]
-        )
-        np.matmul(right, link[:, 3:7].T, out=out[3:])
-        return out[:3].T, out[3:].T
-    qx, qy, qz, qw = acc_q[:, 0], acc_q[:, 1], acc_q[:, 2], acc_q[:, 3]
-    np.subtract(pw * qx + px * qw + py * qz, pz * qy, out=out[3])
-    np.subtract(pw * qy + py * qw + pz * qx, px * qz, out=out[4])
-    np.subtract(pw * qz + pz * qw + px * qy, py * qx, out=out[5])
-    np.subtract(pw * qw - px * qx - py * qy, pz * qz, out=out[6])
+        out[0], out[1], out[2] = _compose_translation(columns, _link(list(acc_t.T) + [0.0] * 4))
+        np.matmul(_times_fixed(acc_q[0].tolist()), link[:, 3:7].T, out=out[3:])
+    else:
+        for row, value in zip(
+            out, _compose(columns, _link(list(acc_t.T) + list(acc_q.T))), strict=True
+        ):
+            row[:] = value
     return out[:3].T, out[3:].T
 
 
-def _accumulate_one(
-    link: list[float], acc_t: list[float], acc_q: list[float]
-) -> tuple[FloatArray, FloatArray]:
-    """Return ``link * acc`` for one row (static links) in plain floats, as the scalar walk."""
-    lx, ly, lz, px, py, pz, pw = link
-    sx, sy, sz = acc_t
-    qx, qy, qz, qw = acc_q
-    ux = 2.0 * (py * sz - pz * sy)
-    uy = 2.0 * (pz * sx - px * sz)
-    uz = 2.0 * (px * sy - py * sx)
-    return (
-        np.array(
-            [
-                [
-                    sx + pw * ux + (py * uz - pz * uy) + lx,
-                    sy + pw * uy + (pz * ux - px * uz) + ly,
-                    sz + pw * uz + (px * uy - py * ux) + lz,
-                ]
-            ]
-        ),
-        np.array(
-            [
-                [
-                    pw * qx + px * qw + py * qz - pz * qy,
-                    pw * qy + py * qw + pz * qx - px * qz,
-                    pw * qz + pz * qw + px * qy - py * qx,
-                    pw * qw - px * qx - py * qy - pz * qz,
-                ]
-            ]
-        ),
+def _link(values: Sequence[Value]) -> Link:
+    """Return seven values (tx, ty, tz, qx, qy, qz, qw) as a :data:`Link`."""
+    tx, ty, tz, qx, qy, qz, qw = values
+    return (tx, ty, tz, qx, qy, qz, qw)
+
+
+def _times_fixed(q: Sequence[Value]) -> FloatArray:
+    """
+    Return the 4x4 matrix ``M`` with ``M @ p == p * q`` for every quaternion ``p`` (column).
+
+    ``p * q`` is :func:`~tf_demo.core.math3d.quat_multiply`: for one fixed ``q`` it is linear
+    in ``p``, so many links times one accumulated rotation are one matrix product.
+    """
+    qx, qy, qz, qw = q
+    return np.array(
+        [
+            [qw, qz, -qy, qx],
+            [-qz, qw, qx, qy],
+            [qy, -qx, qw, qz],
+            [-qx, -qy, -qz, qw],
+        ]
     )
 
 
@@ -297,15 +273,13 @@ def _compose_translation(link: Link, acc: Link) -> tuple[Value, Value, Value]:
 
 def _compose(link: Link, acc: Link) -> Link:
     """Return ``link * acc`` on floats or lane arrays, with the scalar walk's formula."""
-    lx, ly, lz, px, py, pz, pw = link
-    sx, sy, sz, qx, qy, qz, qw = acc
-    ux = 2.0 * (py * sz - pz * sy)
-    uy = 2.0 * (pz * sx - px * sz)
-    uz = 2.0 * (px * sy - py * sx)
+    x, y, z = _compose_translation(link, acc)
+    px, py, pz, pw = link[3:]
+    qx, qy, qz, qw = acc[3:]
     return (
-        sx + pw * ux + (py * uz - pz * uy) + lx,
-        sy + pw * uy + (pz * ux - px * uz) + ly,
-        sz + pw * uz + (px * uy - py * ux) + lz,
+        x,
+        y,
+        z,
         pw * qx + px * qw + py * qz - pz * qy,
         pw * qy + py * qw + pz * qx - px * qz,
         pw * qz + pz * qw + px * qy - py * qx,
@@ -358,16 +332,7 @@ def _chain_product(links: list[TimeCache | StaticCache], times: IntArray) -> Lin
             # The same rotation for every lane (static links below): link * q is linear in
             # the link's quaternion, one matrix product instead of 28 array operations.
             x, y, z = _compose_translation(link, acc)
-            qx, qy, qz, qw = acc[3:]
-            right = np.array(
-                [
-                    [qw, qz, -qy, qx],
-                    [-qz, qw, qx, qy],
-                    [qy, -qx, qw, qz],
-                    [-qx, -qy, -qz, qw],
-                ]
-            )
-            product = right @ rows[3:]
+            product = _times_fixed(acc[3:]) @ rows[3:]
             acc = (x, y, z, product[0], product[1], product[2], product[3])
         else:
             acc = _compose(link, acc)
@@ -375,39 +340,45 @@ def _chain_product(links: list[TimeCache | StaticCache], times: IntArray) -> Lin
     return acc
 
 
-def _inverse(t: Link) -> Link:
-    """Return ``t^-1`` as the scalar walk computes it (conjugate, then rotate ``-t``)."""
-    tx, ty, tz, qx, qy, qz, qw = t
-    ix, iy, iz, iw = -qx, -qy, -qz, qw
-    # rotate_vector((ix, iy, iz, iw), (-tx, -ty, -tz)) with math3d's operation order.
-    vx, vy, vz = -tx, -ty, -tz
-    rx = iw * vx + iy * vz - iz * vy
-    ry = iw * vy + iz * vx - ix * vz
-    rz = iw * vz + ix * vy - iy * vx
-    rw = -ix * vx - iy * vy - iz * vz
+def _rotate(q: tuple[Value, Value, Value, Value], v: tuple[Value, Value, Value]) -> Link:
+    """
+    Return ``R(q) v`` (first three values) and ``q`` with math3d's ``rotate_vector`` order.
+
+    On floats or lane arrays: the full-path steps of the scalar walk (:func:`_inverse`,
+    :func:`_inverse_times`) go through math3d, so these must match it operation by operation.
+    """
+    qx, qy, qz, qw = q
+    vx, vy, vz = v
+    rx = qw * vx + qy * vz - qz * vy
+    ry = qw * vy + qz * vx - qx * vz
+    rz = qw * vz + qx * vy - qy * vx
+    rw = -qx * vx - qy * vy - qz * vz
     return (
-        rw * -ix + rx * iw + ry * -iz - rz * -iy,
-        rw * -iy + ry * iw + rz * -ix - rx * -iz,
-        rw * -iz + rz * iw + rx * -iy - ry * -ix,
-        ix,
-        iy,
-        iz,
-        iw,
+        rw * -qx + rx * qw + ry * -qz - rz * -qy,
+        rw * -qy + ry * qw + rz * -qx - rx * -qz,
+        rw * -qz + rz * qw + rx * -qy - ry * -qx,
+        qx,
+        qy,
+        qz,
+        qw,
     )
 
 
+def _inverse(t: Link) -> Link:
+    """Return ``t^-1`` as the scalar walk computes it (math3d's ``invert``)."""
+    tx, ty, tz, qx, qy, qz, qw = t
+    return _rotate((-qx, -qy, -qz, qw), (-tx, -ty, -tz))
+
+
 def _inverse_times(inverse: Link, source: Link) -> Link:
-    """Return ``inverse * source`` as the scalar walk's full-path step (math3d's order)."""
+    """Return ``inverse * source`` as the scalar walk's full-path step (math3d's ``compose``)."""
     ox, oy, oz, ix, iy, iz, iw = inverse
     sx, sy, sz, sqx, sqy, sqz, sqw = source
-    rx = iw * sx + iy * sz - iz * sy
-    ry = iw * sy + iz * sx - ix * sz
-    rz = iw * sz + ix * sy - iy * sx
-    rw = -ix * sx - iy * sy - iz * sz
+    rx, ry, rz, _, _, _, _ = _rotate((ix, iy, iz, iw), (sx, sy, sz))
     return (
-        (rw * -ix + rx * iw + ry * -iz - rz * -iy) + ox,
-        (rw * -iy + ry * iw + rz * -ix - rx * -iz) + oy,
-        (rw * -iz + rz * iw + rx * -iy - ry * -ix) + oz,
+        rx + ox,
+        ry + oy,
+        rz + oz,
         iw * sqx + ix * sqw + iy * sqz - iz * sqy,
         iw * sqy + iy * sqw + iz * sqx - ix * sqz,
         iw * sqz + iz * sqw + ix * sqy - iy * sqx,
