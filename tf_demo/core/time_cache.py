@@ -388,7 +388,9 @@ class TimeCache:
         """
         Return the live samples as numpy arrays, ascending by stamp (for the batch walk).
 
-        Cached until the next change (insert, prune, clear); treat them as read-only.
+        Cached until the next change (insert, prune, clear); treat them as read-only.  The
+        interval constants are the batch walk's slerp, pinned to :func:`math3d.slerp
+        <tf_demo.core.math3d.slerp>` by ``test/core/test_inlined_math.py``.
         """
         cached = self._arrays
         if cached is not None and cached.version == self._version:
