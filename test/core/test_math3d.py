@@ -198,3 +198,23 @@ def test_batch_helpers_equal_scalar_versions():
         assert _close(t_out[i], t, 1e-12)
         assert _close(q_out[i], q, 1e-12)
         assert _close(s_out[i], m3.slerp(tuple(qa[i]), tuple(qb[i]), float(ratio[i])), 1e-12)
+
+
+def test_lerp_endpoints_and_midpoint():
+    """lerp gives v0 at 0, v1 at 1 and (1 - r) v0 + r v1 between (tf2's setInterpolate3)."""
+    v0, v1 = (1.0, -2.0, 3.0), (5.0, 6.0, -7.0)
+    assert m3.lerp(v0, v1, 0.0) == v0
+    assert m3.lerp(v0, v1, 1.0) == v1
+    assert _close(m3.lerp(v0, v1, 0.25), (2.0, 0.0, 0.5), 1e-15)
+
+
+def test_matrix_products_match_numpy():
+    """matrix_times, matrix_apply and matrix_transpose agree with numpy's products."""
+    rng = random.Random(29)
+    a = m3.matrix_from_quat(_random_quat(rng))
+    b = m3.matrix_from_quat(_random_quat(rng))
+    v = (rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-3, 3))
+    assert np.allclose(m3.matrix_times(a, b), np.array(a) @ np.array(b), rtol=0, atol=1e-15)
+    assert np.allclose(m3.matrix_apply(a, v), np.array(a) @ np.array(v), rtol=0, atol=1e-15)
+    assert m3.matrix_transpose(a) == tuple(map(tuple, np.array(a).T.tolist()))
+    assert np.allclose(m3.matrix_times(m3.matrix_transpose(a), a), np.eye(3), atol=1e-15)
