@@ -194,21 +194,19 @@ def slerp(q0: Quat, q1: Quat, ratio: float) -> Quat:
     )
 
 
+def _cos_sin(angle: float) -> tuple[float, float]:
+    return math.cos(angle), math.sin(angle)
+
+
 def quat_from_rpy(roll: float, pitch: float, yaw: float) -> Quat:
     """
     Return the quaternion of fixed-axis X-Y-Z angles (tf2 ``Quaternion::setRPY``).
 
     The rotation is ``Rz(yaw) * Ry(pitch) * Rx(roll)``: roll is applied first.
     """
-    half_yaw = yaw * 0.5
-    half_pitch = pitch * 0.5
-    half_roll = roll * 0.5
-    cy = math.cos(half_yaw)
-    sy = math.sin(half_yaw)
-    cp = math.cos(half_pitch)
-    sp = math.sin(half_pitch)
-    cr = math.cos(half_roll)
-    sr = math.sin(half_roll)
+    cr, sr = _cos_sin(roll * 0.5)
+    cp, sp = _cos_sin(pitch * 0.5)
+    cy, sy = _cos_sin(yaw * 0.5)
     return (
         sr * cp * cy - cr * sp * sy,
         cr * sp * cy + sr * cp * sy,
@@ -219,12 +217,9 @@ def quat_from_rpy(roll: float, pitch: float, yaw: float) -> Quat:
 
 def matrix_from_rpy(roll: float, pitch: float, yaw: float) -> Matrix3:
     """Return the matrix ``Rz(yaw) * Ry(pitch) * Rx(roll)`` (tf2 ``Matrix3x3::setRPY``)."""
-    ci = math.cos(roll)
-    cj = math.cos(pitch)
-    ch = math.cos(yaw)
-    si = math.sin(roll)
-    sj = math.sin(pitch)
-    sh = math.sin(yaw)
+    ci, si = _cos_sin(roll)
+    cj, sj = _cos_sin(pitch)
+    ch, sh = _cos_sin(yaw)
     cc = ci * ch
     cs = ci * sh
     sc = si * ch
@@ -289,18 +284,10 @@ def matrix_from_quat(q: Quat) -> Matrix3:
     x, y, z, w = q
     d = x * x + y * y + z * z + w * w
     s = 2.0 / d if d else math.nan
-    xs = x * s
-    ys = y * s
-    zs = z * s
-    wx = w * xs
-    wy = w * ys
-    wz = w * zs
-    xx = x * xs
-    xy = x * ys
-    xz = x * zs
-    yy = y * ys
-    yz = y * zs
-    zz = z * zs
+    xs, ys, zs = x * s, y * s, z * s
+    wx, wy, wz = w * xs, w * ys, w * zs
+    xx, xy, xz = x * xs, x * ys, x * zs
+    yy, yz, zz = y * ys, y * zs, z * zs
     return (
         (1.0 - (yy + zz), xy - wz, xz + wy),
         (xy + wz, 1.0 - (xx + zz), yz - wx),
