@@ -387,6 +387,41 @@ def _inverse_times(inverse: Link, source: Link) -> Link:
     )
 
 
+def _uniform_side(
+    caches: Sequence[TimeCache | StaticCache | None],
+    frame: int,
+    stop: int,
+    other: int,
+    window: tuple[int, int],
+) -> tuple[list[TimeCache | StaticCache], int, int, bool] | None:
+    """
+    Collect the links from ``frame`` towards ``stop`` that every lane takes (one side).
+
+    The side stops at ``stop``, at a frame without a cache, or at ``other`` (before taking its
+    link).  ``window`` bounds the lanes' times.  :returns: None when some lane needs the general
+    walk (see :func:`_uniform_parent`, or deeper than tf2's limit); else ``(links bottom first,
+    the frame where the side stopped, the last frame whose link was taken or the start frame,
+    whether it stopped at other)``.
+    """
+    links: list[TimeCache | StaticCache] = []
+    last = frame
+    while frame != stop:
+        cache = caches[frame]
+        if cache is None:
+            break
+        parent = _uniform_parent(cache, *window)
+        if parent is None:
+            return None
+        if frame == other:
+            return links, frame, last, True
+        links.append(cache)
+        last = frame
+        frame = parent
+        if len(links) > _MAX_GRAPH_DEPTH:
+            return None
+    return links, frame, last, False
+
+
 def batch_walk_uniform(
     caches: Sequence[TimeCache | StaticCache | None],
     target_id: int,
@@ -408,43 +443,23 @@ def batch_walk_uniform(
     latest = int(times.max())
     if earliest <= 0:
         return None  # time 0 means "latest" to a cache: leave it to the general walk
-    source_links: list[TimeCache | StaticCache] = []
-    frame = source_id
-    top = frame
-    ending = _ENDING_NONE
-    while frame != 0:
-        cache = caches[frame]
-        if cache is None:
-            top = frame
-            break
-        parent = _uniform_parent(cache, earliest, latest)
-        if parent is None:
-            return None
-        if frame == target_id:
-            ending = _ENDING_TARGET_PARENT
-            break
-        source_links.append(cache)
-        top = frame
-        frame = parent
-        if len(source_links) > _MAX_GRAPH_DEPTH:
-            return None
+    window = (earliest, latest)
+    source = _uniform_side(caches, source_id, 0, target_id, window)
+    if source is None:
+        return None
+    source_links, frame, last, met = source
     target_links: list[TimeCache | StaticCache] = []
-    if ending == _ENDING_NONE:
-        frame = target_id
-        while frame != top:
-            cache = caches[frame]
-            if cache is None:
-                return None
-            parent = _uniform_parent(cache, earliest, latest)
-            if parent is None:
-                return None
-            if frame == source_id:
-                ending = _ENDING_SOURCE_PARENT
-                break
-            target_links.append(cache)
-            frame = parent
-            if len(target_links) > _MAX_GRAPH_DEPTH:
-                return None
+    ending = _ENDING_TARGET_PARENT if met else _ENDING_NONE
+    if not met:
+        top = last if frame == 0 else frame
+        target = _uniform_side(caches, target_id, top, source_id, window)
+        if target is None:
+            return None
+        target_links, frame, _, met = target
+        if met:
+            ending = _ENDING_SOURCE_PARENT
+        elif frame != top:
+            return None  # a frame without a cache below the top: the general walk fails it
     translations = np.empty((count, 3))
     rotations = np.empty((count, 4))
     # Chunks keep the temporaries small: in cache, and reused by the allocator instead of
