@@ -73,7 +73,7 @@ class World:
         return self.add(self.transport.create_node(name))
 
     def rsp(self, xml: str, *, reliable_input: bool = True, **parameters: Any) -> Any:
-        from tf_demo.nodes.robot_state_publisher import _build_node_class
+        from tf_demo.nodes.robot_state_publisher import RobotStatePublisher
         from tf_demo.transport.parameters import Parameter
 
         # reliable joint_states (upstream's qos_overrides) so a busy machine cannot drop input
@@ -85,7 +85,7 @@ class World:
             reliable = {}
         overrides = [Parameter('robot_description', value=xml)]
         overrides += [Parameter(k, value=v) for k, v in {**reliable, **parameters}.items()]
-        return self.add(_build_node_class()((), parameter_overrides=overrides))
+        return self.add(RobotStatePublisher((), parameter_overrides=overrides))
 
     def start(self) -> None:
         def spin() -> None:
@@ -540,14 +540,14 @@ def test_backward_sim_time_jump_resets_the_throttle(world: World, capfd: Any) ->
 def test_jsp_ignores_an_invalid_description_from_the_topic(world: World) -> None:
     """A broken description on robot_description is reported; the node keeps running and takes
     the next valid one."""
-    from tf_demo.nodes.joint_state_publisher import _build_node_class
+    from tf_demo.nodes.joint_state_publisher import JointStatePublisher
     from tf_demo.transport.messages import message_module
     from tf_demo.transport.messages import sensor_msgs
     from tf_demo.transport.messages import std_msgs
     from tf_demo.transport.qos import DurabilityPolicy
     from tf_demo.transport.qos import QoSProfile
 
-    world.add(_build_node_class()(None))
+    world.add(JointStatePublisher(None))
     client = world.node('description_source')
     description = client.create_publisher(
         std_msgs.String,

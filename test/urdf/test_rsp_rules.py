@@ -22,13 +22,13 @@ from pathlib import Path
 import random
 
 import pytest
+from tf_demo.msgs.cdr import TfMessageEncoder
 from tf_demo.nodes.robot_state_publisher import check_publish_frequency
 from tf_demo.nodes.robot_state_publisher import DroppedMessageLog
 from tf_demo.nodes.robot_state_publisher import joint_state_problem
 from tf_demo.nodes.robot_state_publisher import JointStateThrottle
 from tf_demo.nodes.robot_state_publisher import positions_from_joint_state
 from tf_demo.nodes.robot_state_publisher import publish_interval_ns
-from tf_demo.nodes.robot_state_publisher import TfMessageEncoder
 
 GOLDEN = Path(__file__).resolve().parents[1] / 'data' / 'golden'
 SECOND = 1_000_000_000
@@ -222,6 +222,26 @@ def test_encoder_prefix_and_padding_agree_with_the_message_codec() -> None:
                 ro.x, ro.y, ro.z, ro.w = q
                 expected.transforms.append(message)
             assert encoder.encode(transforms, sec, nanosec) == cdr.serialize(expected)
+
+
+def test_encoder_agrees_with_the_codec_beyond_cached_layouts() -> None:
+    """More transforms than a cached layout holds, and a layout met again, encode as serialize."""
+    from tf_demo.msgs import cdr
+    from tf_demo.msgs import geometry_msgs
+    from tf_demo.msgs import tf2_msgs
+    from tf_demo.msgs.convert import fill_transform_stamped
+
+    for count in (1, 1100, 1100, 3, 3):
+        transforms = [
+            (f'p{i}', f'child_{i}', (float(i), 0.5, -1.0), (0.0, 0.0, 0.6, 0.8))
+            for i in range(count)
+        ]
+        stamped = [
+            fill_transform_stamped(geometry_msgs.TransformStamped(), p, c, 9 * SECOND + 8, t, q)
+            for p, c, t, q in transforms
+        ]
+        expected = cdr.serialize(tf2_msgs.TFMessage(transforms=stamped))
+        assert TfMessageEncoder().encode(transforms, 9, 8) == expected
 
 
 def test_encoder_output_decodes_back_to_the_transforms() -> None:

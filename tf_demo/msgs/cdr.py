@@ -28,17 +28,21 @@ string, a strict UTF-8 decode) and leave them to the reference decoder.
 TFMessages, the hot path, also have whole-message layouts: once the same frame-name lengths come
 twice, one precompiled struct reads or writes the whole message in one call (see
 :class:`_TfShapes` and :func:`_tf_encoder`); :func:`decode_tf_message_transforms` skips the
-message objects altogether.
+message objects altogether, as :class:`TfMessageEncoder` does for robot_state_publisher's
+transform tuples.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from collections.abc import Sequence
 import functools
 from struct import Struct
 from typing import Any
 from typing import TypeVar
 
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 from tf_demo.msgs import _codegen
 from tf_demo.msgs._message import blank_instance_maker
 from tf_demo.msgs._message import Message
@@ -51,6 +55,8 @@ from tf_demo.msgs._schema import spec_for
 
 __all__ = [
     'CdrError',
+    'FrameTransform',
+    'TfMessageEncoder',
     'TransformTuple',
     'decode_tf_message_transforms',
     'deserialize',
@@ -507,6 +513,67 @@ def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
         return pack(*fields)
 
     return encode
+
+
+#: ``(parent, child, (tx, ty, tz), (qx, qy, qz, qw))``: a transform for :class:`TfMessageEncoder`.
+FrameTransform = tuple[str, str, Vec3, Quat]
+_HEADER_AND_COUNT = Struct('<II')
+#: (first transform's pack, its names, later transforms' pack, their names) of one frame pair.
+_PairPacks = tuple[Callable[..., bytes], bytes, Callable[..., bytes], bytes]
+
+
+def _cdr_string(text: str) -> bytes:
+    """Return ``text`` as a CDR string: its length with the NUL, UTF-8 bytes, the NUL."""
+    data = text.encode()
+    return (len(data) + 1).to_bytes(4, 'little') + data + b'\x00'
+
+
+class TfMessageEncoder:
+    """
+    Encode ``tf2_msgs/msg/TFMessage`` CDR bytes straight from transform tuples, no objects.
+
+    The bytes are :func:`serialize`'s (CDR_LE). Every frame name gets ``frame_prefix`` in front
+    and every transform the same stamp: robot_state_publisher's hot path. The names and padding
+    of each (parent, child) pair are built once; a message then costs one ``pack`` per transform
+    (faster here than one whole-message layout).
+    """
+
+    def __init__(self, frame_prefix: str = '') -> None:
+        self.frame_prefix = frame_prefix
+        self._pairs: dict[tuple[str, str], _PairPacks] = {}
+
+    def _pair(self, parent: str, child: str) -> _PairPacks:
+        names = _cdr_string(self.frame_prefix + parent)
+        names += b'\x00' * (-len(names) % 4)
+        names += _cdr_string(self.frame_prefix + child)
+        # The first transform starts 4 mod 8 (after the count), the rest 0 mod 8; the 8-byte
+        # stamp keeps that, then the doubles need 8-byte alignment.
+        first = names + b'\x00' * (-(4 + 8 + len(names)) % 8)
+        later = names + b'\x00' * (-(8 + len(names)) % 8)
+        packs = (
+            Struct(f'<iI{len(first)}s7d').pack,
+            first,
+            Struct(f'<iI{len(later)}s7d').pack,
+            later,
+        )
+        if len(self._pairs) >= _MAX_CACHED_NAMES:
+            self._pairs.clear()
+        self._pairs[(parent, child)] = packs
+        return packs
+
+    def encode(self, transforms: Sequence[FrameTransform], sec: int, nanosec: int) -> bytes:
+        """Return the serialised TFMessage with every transform stamped ``sec.nanosec``."""
+        parts = [_HEADER_AND_COUNT.pack(_CDR_LE_HEADER, len(transforms))]
+        pairs = self._pairs
+        first = True
+        for parent, child, (tx, ty, tz), (qx, qy, qz, qw) in transforms:
+            packs = pairs.get((parent, child)) or self._pair(parent, child)
+            if first:
+                parts.append(packs[0](sec, nanosec, packs[1], tx, ty, tz, qx, qy, qz, qw))
+                first = False
+            else:
+                parts.append(packs[2](sec, nanosec, packs[3], tx, ty, tz, qx, qy, qz, qw))
+        return b''.join(parts)
 
 
 def _tf_tuples(values: tuple[Any, ...]) -> list[TransformTuple]:

@@ -37,12 +37,28 @@ from __future__ import annotations
 from collections.abc import Iterable
 from collections.abc import Sequence
 from itertools import repeat
-from struct import Struct
 import sys
 import time
 from typing import Any
 
+from tf_demo.msgs.cdr import TfMessageEncoder
 from tf_demo.nodes import non_ros_arguments
+from tf_demo.ros.node_helpers import declare_qos_overrides
+from tf_demo.transport import Node
+from tf_demo.transport import run_node
+from tf_demo.transport.logging import get_logger
+from tf_demo.transport.messages import geometry_msgs
+from tf_demo.transport.messages import sensor_msgs
+from tf_demo.transport.messages import std_msgs
+from tf_demo.transport.messages import tf2_msgs
+from tf_demo.transport.parameters import Parameter
+from tf_demo.transport.parameters import SetParametersResult
+from tf_demo.transport.qos import DurabilityPolicy
+from tf_demo.transport.qos import DynamicBroadcasterQoS
+from tf_demo.transport.qos import HistoryPolicy
+from tf_demo.transport.qos import qos_profile_sensor_data
+from tf_demo.transport.qos import QoSProfile
+from tf_demo.transport.qos import ReliabilityPolicy
 from tf_demo.urdf import JointPositionError
 from tf_demo.urdf import JointTransform
 from tf_demo.urdf import parse_xacro_args
@@ -53,6 +69,7 @@ __all__ = [
     'DroppedMessageLog',
     'JointStateThrottle',
     'RobotDescriptionError',
+    'RobotStatePublisher',
     'TfMessageEncoder',
     'check_publish_frequency',
     'joint_state_problem',
@@ -193,57 +210,6 @@ def positions_from_joint_state(
     return dict(zip(reversed(names), reversed(positions), strict=True))
 
 
-_HEADER = b'\x00\x01\x00\x00'
-_U32 = Struct('<I')
-
-
-def _cdr_string(text: str) -> bytes:
-    data = text.encode('utf-8')
-    return _U32.pack(len(data) + 1) + data + b'\x00'
-
-
-class TfMessageEncoder:
-    """
-    Encode ``tf2_msgs/msg/TFMessage`` CDR bytes straight from joint transforms.
-
-    Byte-identical to ROS 2's plain CDR (little endian, ``00 01 00 00`` header). The frame-id
-    strings and padding of each (parent, child) pair are built once per prefix; a message then
-    costs one ``struct.pack`` per transform.
-    """
-
-    def __init__(self, frame_prefix: str = '') -> None:
-        self.frame_prefix = frame_prefix
-        self._packers: dict[tuple[str, str], tuple[Struct, bytes, Struct, bytes]] = {}
-
-    def _packer_for(self, parent: str, child: str) -> tuple[Struct, bytes, Struct, bytes]:
-        names = _cdr_string(self.frame_prefix + parent)
-        names += b'\x00' * (-len(names) % 4)
-        names += _cdr_string(self.frame_prefix + child)
-        # Elements start 4 mod 8 (the first, after the sequence length) or 0 mod 8 (the rest);
-        # the 8-byte stamp keeps that, then the doubles need 8-byte alignment.
-        variants: list[Any] = []
-        for start in (4, 0):
-            middle = names + b'\x00' * (-(start + 8 + len(names)) % 8)
-            variants += [Struct(f'<iI{len(middle)}s7d'), middle]
-        packer = (variants[0], variants[1], variants[2], variants[3])
-        self._packers[(parent, child)] = packer
-        return packer
-
-    def encode(self, transforms: Sequence[JointTransform], sec: int, nanosec: int) -> bytes:
-        """Return the serialised TFMessage with every transform stamped ``sec.nanosec``."""
-        parts = [_HEADER, _U32.pack(len(transforms))]
-        packers = self._packers
-        first = True
-        for parent, child, (tx, ty, tz), (qx, qy, qz, qw) in transforms:
-            packer = packers.get((parent, child)) or self._packer_for(parent, child)
-            if first:
-                parts.append(packer[0].pack(sec, nanosec, packer[1], tx, ty, tz, qx, qy, qz, qw))
-                first = False
-            else:
-                parts.append(packer[2].pack(sec, nanosec, packer[3], tx, ty, tz, qx, qy, qz, qw))
-        return b''.join(parts)
-
-
 def _load_model(xml: str) -> RobotModel:
     """Build the model; an invalid description raises RobotDescriptionError with the reason."""
     if not xml:
@@ -256,249 +222,225 @@ def _load_model(xml: str) -> RobotModel:
         raise RobotDescriptionError(msg) from None
 
 
-def _build_node_class() -> type:
-    """Define the node class on the selected backend's Node (imported only when a node runs)."""
-    from tf_demo.ros.node_helpers import declare_qos_overrides
-    from tf_demo.transport import Node
-    from tf_demo.transport.logging import get_logger
-    from tf_demo.transport.messages import geometry_msgs
-    from tf_demo.transport.messages import sensor_msgs
-    from tf_demo.transport.messages import std_msgs
-    from tf_demo.transport.messages import tf2_msgs
-    from tf_demo.transport.parameters import SetParametersResult
-    from tf_demo.transport.qos import DurabilityPolicy
-    from tf_demo.transport.qos import DynamicBroadcasterQoS
-    from tf_demo.transport.qos import HistoryPolicy
-    from tf_demo.transport.qos import qos_profile_sensor_data
-    from tf_demo.transport.qos import QoSProfile
-    from tf_demo.transport.qos import ReliabilityPolicy
-
-    latched = QoSProfile(
-        depth=1,
-        history=HistoryPolicy.KEEP_LAST,
-        reliability=ReliabilityPolicy.RELIABLE,
-        durability=DurabilityPolicy.TRANSIENT_LOCAL,
-    )
-
-    class RobotStatePublisher(Node):  # type: ignore[misc]
-        """The robot_state_publisher node (see the module docstring)."""
-
-        def __init__(self, file_arguments: Sequence[str] = (), **kwargs: Any) -> None:
-            super().__init__(NODE_NAME, **kwargs)
-            logger = self.get_logger()
-            xml = self.declare_parameter('robot_description', '').value
-            urdf_file = self.declare_parameter('urdf_file', '').value
-            xacro_args = self.declare_parameter('xacro_args', '').value
-            if not xml and not urdf_file and file_arguments:
-                logger.warning(
-                    'No robot_description parameter, but command-line argument available.  '
-                    'Assuming argument is name of URDF file.  This backwards compatibility '
-                    'fallback will be removed in the future.'
-                )
-                urdf_file = file_arguments[0]
-                what = 'URDF file'
-            else:
-                what = 'urdf_file'
-            if not xml and urdf_file:
-                try:
-                    xml = RobotModel.from_file(urdf_file, parse_xacro_args(xacro_args)).xml
-                except (UrdfError, ValueError) as error:
-                    msg = f'Failed to load {what} {urdf_file}: {error}'
-                    raise RobotDescriptionError(msg) from None
-                self.set_parameters([_parameter('robot_description', xml)])
-            if not xml:
-                msg = (
-                    'robot_description parameter must not be empty (set it, or urdf_file to a '
-                    'URDF or xacro file)'
-                )
-                raise RobotDescriptionError(msg)
-            self._description_pub = self.create_publisher(
-                std_msgs.String, 'robot_description', latched
-            )
-            self._model = _load_model(xml)
-            self._announce_model(xml)
-
-            frequency = self.declare_parameter('publish_frequency', DEFAULT_PUBLISH_FREQUENCY)
-            self._publish_frequency = float(frequency.value)
-            if not check_publish_frequency(self._publish_frequency):
-                msg = 'publish_frequency must be between 0 (exclusive) and 1000'
-                raise RobotDescriptionError(msg)
-            self._frame_prefix = str(self.declare_parameter('frame_prefix', '').value)
-            self._ignore_timestamp = bool(self.declare_parameter('ignore_timestamp', False).value)
-
-            self._throttle = JointStateThrottle()
-            self._dropped_log = DroppedMessageLog()
-            self._encoder = TfMessageEncoder(self._frame_prefix)
-            self._raw_tf = True
-            self._static: dict[str, Any] = {}
-            self._tf_pub = self.create_publisher(
-                tf2_msgs.TFMessage,
-                '/tf',
-                declare_qos_overrides(
-                    self, '/tf', 'publisher', DynamicBroadcasterQoS(), _TF_OVERRIDABLE
-                ),
-            )
-            self._tf_static_pub = self.create_publisher(
-                tf2_msgs.TFMessage,
-                '/tf_static',
-                declare_qos_overrides(
-                    self, '/tf_static', 'publisher', _copy_qos(latched), _TF_STATIC_OVERRIDABLE
-                ),
-            )
-            self.add_on_set_parameters_callback(self._on_set_parameters)
-            self.create_subscription(
-                sensor_msgs.JointState,
-                'joint_states',
-                self._on_joint_state,
-                declare_qos_overrides(
-                    self,
-                    self._resolved('joint_states'),
-                    'subscription',
-                    _copy_qos(qos_profile_sensor_data),
-                    _JOINT_STATES_OVERRIDABLE,
-                ),
-            )
-            self._publish_fixed_transforms()
-
-        # -- QoS overrides (upstream: QosOverridingOptions::with_default_policies) -----------
-        def _resolved(self, topic: str) -> str:
-            try:
-                return str(self.resolve_topic_name(topic))
-            except (AttributeError, TypeError):
-                namespace = self.get_namespace().rstrip('/')
-                return f'{namespace}/{topic}'
-
-        # -- model ---------------------------------------------------------------------------
-        def _announce_model(self, xml: str) -> None:
-            # upstream's model warnings are kdl_parser's own (RCUTILS_LOG_WARN_NAMED)
-            kdl_parser_logger = get_logger('kdl_parser')
-            for warning in self._model.warnings:
-                kdl_parser_logger.warning(warning)
-            for warning in self._model.description.warnings:
-                self.get_logger().warning(warning)
-            self._description_pub.publish(std_msgs.String(data=xml))
-            self.get_logger().info('Robot initialized')
-
-        def _publish_fixed_transforms(self) -> None:
-            stamp = self.get_clock().now().to_msg()
-            prefix = self._frame_prefix
-            for parent, child, translation, rotation in self._model.static_transforms():
-                message = _transform_stamped(
-                    geometry_msgs,
-                    stamp,
-                    (prefix + parent, prefix + child, translation, rotation),
-                )
-                self._static[message.child_frame_id] = message
-            self._tf_static_pub.publish(tf2_msgs.TFMessage(transforms=list(self._static.values())))
-
-        # -- parameters ----------------------------------------------------------------------
-        def _on_set_parameters(self, parameters: list[Any]) -> Any:
-            new_model: RobotModel | None = None
-            new_xml = ''
-            updates: dict[str, Any] = {}
-            for parameter in parameters:
-                if parameter.name == 'robot_description':
-                    new_xml = str(parameter.value or '')
-                    try:
-                        new_model = _load_model(new_xml)
-                    except RobotDescriptionError as error:
-                        if new_xml:
-                            self.get_logger().warning(str(error))
-                        return SetParametersResult(successful=False, reason=str(error))
-                elif parameter.name == 'publish_frequency':
-                    if not check_publish_frequency(float(parameter.value)):
-                        return SetParametersResult(
-                            successful=False,
-                            reason='publish_frequency must be between 0.0 (exclusive) and 1000.0',
-                        )
-                    updates['publish_frequency'] = float(parameter.value)
-                elif parameter.name in {'frame_prefix', 'ignore_timestamp'}:
-                    updates[parameter.name] = parameter.value
-            # Everything is valid: apply (upstream applies after the set, from parameter events).
-            if 'publish_frequency' in updates:
-                self._publish_frequency = updates['publish_frequency']
-            if 'ignore_timestamp' in updates:
-                self._ignore_timestamp = bool(updates['ignore_timestamp'])
-            if 'frame_prefix' in updates:
-                self._frame_prefix = str(updates['frame_prefix'])
-                self._encoder = TfMessageEncoder(self._frame_prefix)
-            if new_model is not None:
-                self._model = new_model
-                self._announce_model(new_xml)
-                self._publish_fixed_transforms()
-            return SetParametersResult(successful=True)
-
-        # -- joint states --------------------------------------------------------------------
-        def _on_joint_state(self, message: Any) -> None:
-            names = message.name
-            positions = message.position
-            problem = joint_state_problem(names, positions, message.velocity, message.effort)
-            if problem is not None:
-                self._dropped('lengths', *problem)
-                return
-            now_ns = self.get_clock().now().nanoseconds
-            if self._throttle.clock_moved_backwards(now_ns):
-                self.get_logger().warning(
-                    'Moved backwards in time, re-publishing joint transforms!'
-                )
-            stamp = message.header.stamp
-            sec = stamp.sec
-            nanosec = stamp.nanosec
-            stamp_ns = sec * 1_000_000_000 + nanosec
-            if not self._throttle.should_publish(
-                names,
-                stamp_ns,
-                now_ns,
-                publish_interval_ns(self._publish_frequency),
-                self._ignore_timestamp,
-            ):
-                return
-            try:
-                transforms = self._model.joint_transforms(
-                    positions_from_joint_state(names, positions)
-                )
-            except JointPositionError as error:
-                text = f'Robot state publisher ignored a JointState message: {error}'
-                self._dropped('non-finite', 30, text)
-                return
-            self._publish_tf(transforms, stamp, sec, nanosec)
-            self._throttle.record(names, stamp_ns)
-
-        def _dropped(self, kind: str, level: int, text: str) -> None:
-            """Log a dropped message, throttled per kind (one call site per severity)."""
-            line = self._dropped_log.text(f'{kind}:{level}', text, time.monotonic())
-            if line is None:
-                return
-            if level == 30:
-                self.get_logger().warning(line)
-            else:
-                self.get_logger().error(line)
-
-        def _publish_tf(
-            self, transforms: list[JointTransform], stamp: Any, sec: int, nanosec: int
-        ) -> None:
-            if self._raw_tf:
-                try:
-                    self._tf_pub.publish(self._encoder.encode(transforms, sec, nanosec))
-                    return
-                except TypeError:
-                    self._raw_tf = False  # this backend only publishes message objects
-            prefix = self._frame_prefix
-            self._tf_pub.publish(
-                tf2_msgs.TFMessage(
-                    transforms=[
-                        _transform_stamped(geometry_msgs, stamp, (prefix + p, prefix + c, t, q))
-                        for p, c, t, q in transforms
-                    ]
-                )
-            )
-
-    return RobotStatePublisher
-
-
 _JOINT_STATES_OVERRIDABLE = ('history', 'depth', 'reliability')
 _TF_OVERRIDABLE = ('depth', 'durability', 'history', 'reliability')
 _TF_STATIC_OVERRIDABLE = ('depth', 'history', 'reliability')
+_LATCHED = QoSProfile(
+    depth=1,
+    history=HistoryPolicy.KEEP_LAST,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+)
+
+
+class RobotStatePublisher(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+    """The robot_state_publisher node (see the module docstring)."""
+
+    def __init__(self, file_arguments: Sequence[str] = (), **kwargs: Any) -> None:
+        super().__init__(NODE_NAME, **kwargs)
+        logger = self.get_logger()
+        xml = self.declare_parameter('robot_description', '').value
+        urdf_file = self.declare_parameter('urdf_file', '').value
+        xacro_args = self.declare_parameter('xacro_args', '').value
+        if not xml and not urdf_file and file_arguments:
+            logger.warning(
+                'No robot_description parameter, but command-line argument available.  '
+                'Assuming argument is name of URDF file.  This backwards compatibility '
+                'fallback will be removed in the future.'
+            )
+            urdf_file = file_arguments[0]
+            what = 'URDF file'
+        else:
+            what = 'urdf_file'
+        if not xml and urdf_file:
+            try:
+                xml = RobotModel.from_file(urdf_file, parse_xacro_args(xacro_args)).xml
+            except (UrdfError, ValueError) as error:
+                msg = f'Failed to load {what} {urdf_file}: {error}'
+                raise RobotDescriptionError(msg) from None
+            self.set_parameters([_parameter('robot_description', xml)])
+        if not xml:
+            msg = (
+                'robot_description parameter must not be empty (set it, or urdf_file to a '
+                'URDF or xacro file)'
+            )
+            raise RobotDescriptionError(msg)
+        self._description_pub = self.create_publisher(
+            std_msgs.String, 'robot_description', _LATCHED
+        )
+        self._model = _load_model(xml)
+        self._announce_model(xml)
+
+        frequency = self.declare_parameter('publish_frequency', DEFAULT_PUBLISH_FREQUENCY)
+        self._publish_frequency = float(frequency.value)
+        if not check_publish_frequency(self._publish_frequency):
+            msg = 'publish_frequency must be between 0 (exclusive) and 1000'
+            raise RobotDescriptionError(msg)
+        self._frame_prefix = str(self.declare_parameter('frame_prefix', '').value)
+        self._ignore_timestamp = bool(self.declare_parameter('ignore_timestamp', False).value)
+
+        self._throttle = JointStateThrottle()
+        self._dropped_log = DroppedMessageLog()
+        self._encoder = TfMessageEncoder(self._frame_prefix)
+        self._raw_tf = True
+        self._static: dict[str, Any] = {}
+        self._tf_pub = self.create_publisher(
+            tf2_msgs.TFMessage,
+            '/tf',
+            declare_qos_overrides(
+                self, '/tf', 'publisher', DynamicBroadcasterQoS(), _TF_OVERRIDABLE
+            ),
+        )
+        self._tf_static_pub = self.create_publisher(
+            tf2_msgs.TFMessage,
+            '/tf_static',
+            declare_qos_overrides(
+                self, '/tf_static', 'publisher', _copy_qos(_LATCHED), _TF_STATIC_OVERRIDABLE
+            ),
+        )
+        self.add_on_set_parameters_callback(self._on_set_parameters)
+        self.create_subscription(
+            sensor_msgs.JointState,
+            'joint_states',
+            self._on_joint_state,
+            declare_qos_overrides(
+                self,
+                self._resolved('joint_states'),
+                'subscription',
+                _copy_qos(qos_profile_sensor_data),
+                _JOINT_STATES_OVERRIDABLE,
+            ),
+        )
+        self._publish_fixed_transforms()
+
+    # -- QoS overrides (upstream: QosOverridingOptions::with_default_policies) -----------
+    def _resolved(self, topic: str) -> str:
+        try:
+            return str(self.resolve_topic_name(topic))
+        except (AttributeError, TypeError):
+            namespace = self.get_namespace().rstrip('/')
+            return f'{namespace}/{topic}'
+
+    # -- model ---------------------------------------------------------------------------
+    def _announce_model(self, xml: str) -> None:
+        # upstream's model warnings are kdl_parser's own (RCUTILS_LOG_WARN_NAMED)
+        kdl_parser_logger = get_logger('kdl_parser')
+        for warning in self._model.warnings:
+            kdl_parser_logger.warning(warning)
+        for warning in self._model.description.warnings:
+            self.get_logger().warning(warning)
+        self._description_pub.publish(std_msgs.String(data=xml))
+        self.get_logger().info('Robot initialized')
+
+    def _publish_fixed_transforms(self) -> None:
+        stamp = self.get_clock().now().to_msg()
+        prefix = self._frame_prefix
+        for parent, child, translation, rotation in self._model.static_transforms():
+            message = _transform_stamped(
+                geometry_msgs,
+                stamp,
+                (prefix + parent, prefix + child, translation, rotation),
+            )
+            self._static[message.child_frame_id] = message
+        self._tf_static_pub.publish(tf2_msgs.TFMessage(transforms=list(self._static.values())))
+
+    # -- parameters ----------------------------------------------------------------------
+    def _on_set_parameters(self, parameters: list[Any]) -> Any:
+        new_model: RobotModel | None = None
+        new_xml = ''
+        updates: dict[str, Any] = {}
+        for parameter in parameters:
+            if parameter.name == 'robot_description':
+                new_xml = str(parameter.value or '')
+                try:
+                    new_model = _load_model(new_xml)
+                except RobotDescriptionError as error:
+                    if new_xml:
+                        self.get_logger().warning(str(error))
+                    return SetParametersResult(successful=False, reason=str(error))
+            elif parameter.name == 'publish_frequency':
+                if not check_publish_frequency(float(parameter.value)):
+                    return SetParametersResult(
+                        successful=False,
+                        reason='publish_frequency must be between 0.0 (exclusive) and 1000.0',
+                    )
+                updates['publish_frequency'] = float(parameter.value)
+            elif parameter.name in {'frame_prefix', 'ignore_timestamp'}:
+                updates[parameter.name] = parameter.value
+        # Everything is valid: apply (upstream applies after the set, from parameter events).
+        if 'publish_frequency' in updates:
+            self._publish_frequency = updates['publish_frequency']
+        if 'ignore_timestamp' in updates:
+            self._ignore_timestamp = bool(updates['ignore_timestamp'])
+        if 'frame_prefix' in updates:
+            self._frame_prefix = str(updates['frame_prefix'])
+            self._encoder = TfMessageEncoder(self._frame_prefix)
+        if new_model is not None:
+            self._model = new_model
+            self._announce_model(new_xml)
+            self._publish_fixed_transforms()
+        return SetParametersResult(successful=True)
+
+    # -- joint states --------------------------------------------------------------------
+    def _on_joint_state(self, message: Any) -> None:
+        names = message.name
+        positions = message.position
+        problem = joint_state_problem(names, positions, message.velocity, message.effort)
+        if problem is not None:
+            self._dropped('lengths', *problem)
+            return
+        now_ns = self.get_clock().now().nanoseconds
+        if self._throttle.clock_moved_backwards(now_ns):
+            self.get_logger().warning('Moved backwards in time, re-publishing joint transforms!')
+        stamp = message.header.stamp
+        sec = stamp.sec
+        nanosec = stamp.nanosec
+        stamp_ns = sec * 1_000_000_000 + nanosec
+        if not self._throttle.should_publish(
+            names,
+            stamp_ns,
+            now_ns,
+            publish_interval_ns(self._publish_frequency),
+            self._ignore_timestamp,
+        ):
+            return
+        try:
+            transforms = self._model.joint_transforms(positions_from_joint_state(names, positions))
+        except JointPositionError as error:
+            text = f'Robot state publisher ignored a JointState message: {error}'
+            self._dropped('non-finite', 30, text)
+            return
+        self._publish_tf(transforms, stamp, sec, nanosec)
+        self._throttle.record(names, stamp_ns)
+
+    def _dropped(self, kind: str, level: int, text: str) -> None:
+        """Log a dropped message, throttled per kind (one call site per severity)."""
+        line = self._dropped_log.text(f'{kind}:{level}', text, time.monotonic())
+        if line is None:
+            return
+        if level == 30:
+            self.get_logger().warning(line)
+        else:
+            self.get_logger().error(line)
+
+    def _publish_tf(
+        self, transforms: list[JointTransform], stamp: Any, sec: int, nanosec: int
+    ) -> None:
+        if self._raw_tf:
+            try:
+                self._tf_pub.publish(self._encoder.encode(transforms, sec, nanosec))
+                return
+            except TypeError:
+                self._raw_tf = False  # this backend only publishes message objects
+        prefix = self._frame_prefix
+        self._tf_pub.publish(
+            tf2_msgs.TFMessage(
+                transforms=[
+                    _transform_stamped(geometry_msgs, stamp, (prefix + p, prefix + c, t, q))
+                    for p, c, t, q in transforms
+                ]
+            )
+        )
 
 
 def _copy_qos(profile: Any) -> Any:
@@ -512,8 +454,6 @@ def _copy_qos(profile: Any) -> Any:
 
 
 def _parameter(name: str, value: Any) -> Any:
-    from tf_demo.transport.parameters import Parameter
-
     return Parameter(name, value=value)
 
 
@@ -531,16 +471,18 @@ def _transform_stamped(geometry_msgs: Any, stamp: Any, transform: JointTransform
     return message
 
 
+def _build_node_class() -> type[RobotStatePublisher]:
+    """Return :class:`RobotStatePublisher` (test_rclpy_surface.py still asks for it so)."""
+    return RobotStatePublisher
+
+
 def main(args: Sequence[str] | None = None) -> int:
     """Run robot_state_publisher; return the process exit code."""
-    from tf_demo.transport import run_node
-
     argv = list(sys.argv if args is None else args)  # argv[0] is the program
     file_arguments = non_ros_arguments(argv[1:])
-    node_class = _build_node_class()
 
     def factory() -> Any:
-        return node_class(file_arguments)
+        return RobotStatePublisher(file_arguments)
 
     return int(run_node(factory, argv))
 
