@@ -39,9 +39,8 @@ import textwrap
 
 from tf_demo.cli._snapshot import find_cycle
 from tf_demo.cli._snapshot import Snapshot
-
-Vec3 = tuple[float, float, float]
-Quat = tuple[float, float, float, float]
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 
 TF_TOPIC = '/tf'
 TF_STATIC_TOPIC = '/tf_static'

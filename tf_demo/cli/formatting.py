@@ -30,10 +30,9 @@ import math
 from typing import Any
 
 from tf_demo.core.math3d import matrix_from_quat
+from tf_demo.core.math3d import Quat
 from tf_demo.core.math3d import rpy_from_quat
-
-Vec3 = tuple[float, float, float]
-Quat = tuple[float, float, float, float]
+from tf_demo.core.math3d import Vec3
 
 # ---------------------------------------------------------------------------------------------
 # tf_echo

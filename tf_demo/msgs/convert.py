@@ -25,12 +25,13 @@ from collections.abc import Sequence
 from typing import Any
 from typing import TypeVar
 
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
+
 NS_PER_S = 1_000_000_000
 _INT32_MIN, _INT32_MAX = -(2**31), 2**31 - 1
 
 MessageT = TypeVar('MessageT')
-Vec3 = tuple[float, float, float]
-Quat = tuple[float, float, float, float]
 
 
 def ns_from_stamp(time_msg: Any) -> int:

@@ -27,15 +27,15 @@ import math
 import sys
 from typing import Any
 
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 from tf_demo.ros.node_helpers import as_float
 from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_rate_hz
 from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.ros.node_helpers import now_ns
-from tf_demo.ros.node_helpers import Quat
 from tf_demo.ros.node_helpers import require_distinct_frames
-from tf_demo.ros.node_helpers import Vec3
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import Node
 from tf_demo.transport import NodeConfigError

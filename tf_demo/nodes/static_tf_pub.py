@@ -33,15 +33,15 @@ from typing import Any
 
 from tf_demo.core.files import InputFileError
 from tf_demo.core.files import read_text_file
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_vector3
 from tf_demo.ros.node_helpers import declare_flexible
 from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.ros.node_helpers import NodeConfigError
 from tf_demo.ros.node_helpers import now_ns
-from tf_demo.ros.node_helpers import Quat
 from tf_demo.ros.node_helpers import rotation_from_values
-from tf_demo.ros.node_helpers import Vec3
 from tf_demo.ros.static_transform_broadcaster import StaticTransformBroadcaster
 from tf_demo.transport import Node
 from tf_demo.transport import run_node

@@ -28,7 +28,9 @@ import math
 from typing import Any
 from typing import TypeVar
 
+from tf_demo.core.math3d import Quat
 from tf_demo.core.math3d import quat_from_rpy
+from tf_demo.core.math3d import Vec3
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.transport.backend import NodeConfigError
 
@@ -36,8 +38,6 @@ __all__ = [
     'MAX_PERIOD_S',
     'MIN_RATE_HZ',
     'NodeConfigError',
-    'Quat',
-    'Vec3',
     'as_float',
     'as_frame',
     'as_period_s',
@@ -53,8 +53,6 @@ __all__ = [
     'rotation_from_values',
 ]
 
-Vec3 = tuple[float, float, float]
-Quat = tuple[float, float, float, float]
 T = TypeVar('T')
 
 

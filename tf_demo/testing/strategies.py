@@ -40,9 +40,9 @@ from hypothesis import HealthCheck
 from hypothesis import settings
 from hypothesis import strategies as st
 from tf_demo.core import math3d
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 
-Vec3 = tuple[float, float, float]
-Quat = tuple[float, float, float, float]
 #: One operation of a scenario; see :func:`build_scenario` (JSON-compatible lists).
 Op = list[Any]
 T = TypeVar('T')

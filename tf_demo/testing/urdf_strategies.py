@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING
 from xml.sax.saxutils import quoteattr
 
 from hypothesis import strategies as st
+from tf_demo.core.math3d import Vec3
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
@@ -44,8 +45,6 @@ __all__ = ['GeneratedRobot', 'pinocchio_link_poses', 'random_positions', 'robots
 JOINT_TYPES = ('fixed', 'revolute', 'continuous', 'prismatic', 'planar', 'floating')
 _MOVABLE = ('revolute', 'continuous', 'prismatic')
 _NAME_ALPHABET = 'abcdefgh_'
-
-Vec3 = tuple[float, float, float]
 
 
 @dataclass(frozen=True)

@@ -35,6 +35,7 @@ import re
 from typing import NoReturn
 
 from lxml import etree  # type: ignore[import-untyped]
+from tf_demo.core.math3d import Vec3
 from tf_demo.urdf.errors import UrdfBrokenRefError
 from tf_demo.urdf.errors import UrdfMalformedError
 from tf_demo.urdf.errors import UrdfUnsupportedError
@@ -59,8 +60,6 @@ _SHAPE_NUMBERS: dict[str, tuple[tuple[str, int], ...]] = {
     'mesh': (('scale', 3),),
 }
 _NUMBER = re.compile(r'[+-]?(?:\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)')
-
-Vec3 = tuple[float, float, float]
 
 
 @dataclass(frozen=True)

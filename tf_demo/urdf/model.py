@@ -34,8 +34,10 @@ import math
 from pathlib import Path
 
 from tf_demo.core.math3d import compose
+from tf_demo.core.math3d import Quat
 from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.core.math3d import rotate_vector
+from tf_demo.core.math3d import Vec3
 from tf_demo.urdf.description import JointDescription
 from tf_demo.urdf.description import parse_robot
 from tf_demo.urdf.description import RobotDescription
@@ -43,8 +45,6 @@ from tf_demo.urdf.loading import read_description
 
 __all__ = ['JointPositionError', 'JointTransform', 'RobotModel']
 
-Vec3 = tuple[float, float, float]
-Quat = tuple[float, float, float, float]
 JointTransform = tuple[str, str, Vec3, Quat]
 """``(parent_link, child_link, translation, rotation_xyzw)``: the pose of child in parent."""
 
