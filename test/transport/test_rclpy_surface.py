@@ -1139,11 +1139,11 @@ def test_publish_takes_a_message_or_bytes_only(standalone_world: Any) -> None:
 @pytest.mark.dds
 def test_rsp_qos_override_parameters_are_read_only_like_rclpys(standalone_world: Any) -> None:
     """RSP's qos_overrides.* take an override at start and refuse later sets, as in rclpy."""
-    from tf_demo.nodes.robot_state_publisher import _build_node_class
+    from tf_demo.nodes.robot_state_publisher import RobotStatePublisher
     from tf_demo.transport.parameters import Parameter
 
     name = 'qos_overrides./tf.publisher.depth'
-    node = _build_node_class()(
+    node = RobotStatePublisher(
         parameter_overrides=[
             Parameter('robot_description', value=ROBOT_URDF),
             Parameter(name, value=7),
@@ -1221,10 +1221,10 @@ def test_tutorial_nodes_publish_rclpy_valid_messages(published: list[Any], tmp_p
     dynamic = DynamicTfPublisher()
     frame = FrameBroadcaster()
     odom = OdomTfBroadcaster()
-    state = rsp._build_node_class()(
+    state = rsp.RobotStatePublisher(
         parameter_overrides=[Parameter('robot_description', value=ROBOT_URDF)]
     )
-    joints = jsp._build_node_class()(str(urdf))
+    joints = jsp.JointStatePublisher(str(urdf))
     nodes += [dynamic, frame, odom, state, joints]
     try:
         dynamic.publish_once()

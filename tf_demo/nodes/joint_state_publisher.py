@@ -413,11 +413,6 @@ def _urdf_file_argument(args: Sequence[str]) -> str | None:
     return plain[0] if plain else None
 
 
-def _build_node_class() -> type[JointStatePublisher]:
-    """Return :class:`JointStatePublisher` (test_rclpy_surface.py still asks for it so)."""
-    return JointStatePublisher
-
-
 def main(args: Sequence[str] | None = None) -> int:
     """Run joint_state_publisher [urdf_file]; return the process exit code."""
     argv = list(sys.argv if args is None else args)  # argv[0] is the program

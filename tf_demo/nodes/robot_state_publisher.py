@@ -471,11 +471,6 @@ def _transform_stamped(geometry_msgs: Any, stamp: Any, transform: JointTransform
     return message
 
 
-def _build_node_class() -> type[RobotStatePublisher]:
-    """Return :class:`RobotStatePublisher` (test_rclpy_surface.py still asks for it so)."""
-    return RobotStatePublisher
-
-
 def main(args: Sequence[str] | None = None) -> int:
     """Run robot_state_publisher; return the process exit code."""
     argv = list(sys.argv if args is None else args)  # argv[0] is the program
