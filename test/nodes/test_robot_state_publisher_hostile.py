@@ -27,12 +27,12 @@ from typing import Any
 import pytest
 from ros_world.jazzy import require_package
 from ros_world.jazzy import stop
-from test_rsp_dds import joint_state
-from test_rsp_dds import Running
-from test_rsp_dds import SAMPLES
-from test_rsp_dds import SECOND
-from test_rsp_dds import wait_until
-from test_rsp_dds import World
+from test_robot_state_publisher_dds import joint_state
+from test_robot_state_publisher_dds import Running
+from test_robot_state_publisher_dds import SAMPLES
+from test_robot_state_publisher_dds import SECOND
+from test_robot_state_publisher_dds import wait_until
+from test_robot_state_publisher_dds import World
 from tf_demo.urdf import expand_xacro
 
 pytestmark = [pytest.mark.dds, pytest.mark.timeout(240)]
@@ -48,7 +48,7 @@ NOT_FINITE = 'position inf is not a finite number'
 
 @pytest.fixture
 def nodes(world_env: dict[str, str]) -> Iterator[World]:
-    """In-process nodes on the test's domain (test_rsp_dds's World)."""
+    """In-process nodes on the test's domain (test_robot_state_publisher_dds's World)."""
     del world_env
     created = World()
     try:
