@@ -50,6 +50,7 @@ from cyclonedds.builtin_types import endpoint_constructor
 from cyclonedds.qos import Policy
 from tf_demo.msgs import cdr
 from tf_demo.transport import dds_wire
+from tf_demo.transport.dds.context import _graph_changed
 from tf_demo.transport.future import Future
 from tf_demo.transport.qos import qos_profile_services_default
 
@@ -532,7 +533,7 @@ class DdsClient(_Entity):
 
 class NodeServicesMixin:
     """
-    rclpy's service and client methods of :class:`~tf_demo.transport.dds_backend.DdsNode`.
+    rclpy's service and client methods of :class:`~tf_demo.transport.dds.node.DdsNode`.
 
     The node provides ``_lock``, ``_services``, ``_clients``, ``_participant``,
     ``_default_callback_group``, ``resolve_topic_name``, ``get_logger``, ``_check_alive``,
@@ -636,9 +637,3 @@ class NodeServicesMixin:
     def _service_writer_gids(self) -> list[bytes]:
         """Reply writers of servers, request writers of clients."""
         return [entity.writer_gid for entity in [*self._services, *self._clients]]
-
-
-def _graph_changed() -> None:
-    from tf_demo.transport import dds_backend
-
-    dds_backend._graph_changed()
