@@ -275,11 +275,15 @@ class TransformListener:
 
 
 def _can_decode_raw(host: Any, buffer: Any) -> bool:
-    """Whether to take serialised bytes: a tf_demo buffer on a standalone (DDS) node."""
+    """
+    Whether to take serialised bytes: a tf_demo buffer on a node that declares the capability.
+
+    The standalone node class carries ``supports_raw_subscriptions = True``; rclpy's lacks it.
+    """
     from tf_demo.ros.buffer import Buffer
 
-    return isinstance(buffer, Buffer) and any(
-        cls.__module__ == 'tf_demo.transport.dds_backend' for cls in type(host).__mro__
+    return isinstance(buffer, Buffer) and (
+        getattr(type(host), 'supports_raw_subscriptions', False) is True
     )
 
 
