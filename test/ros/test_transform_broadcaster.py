@@ -12,13 +12,12 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Pure parts of the broadcasters: what one send contains and how static sets merge."""
+"""Pure parts of TransformBroadcaster: what one send contains."""
 
 from __future__ import annotations
 
 import pytest
 from tf_demo.ros.node_helpers import make_transform_stamped
-from tf_demo.ros.static_transform_broadcaster import merge_static_transforms
 from tf_demo.ros.transform_broadcaster import as_transform_list
 
 
@@ -41,12 +40,3 @@ def test_anything_else_is_a_type_error_naming_it() -> None:
         as_transform_list('base_link')
     with pytest.raises(TypeError, match='got int'):
         as_transform_list([tf('a', 1.0), 3])
-
-
-def test_static_merge_replaces_in_place_and_appends_new_children() -> None:
-    """C++ semantics: a known child is replaced where it was; new children go at the end."""
-    first = merge_static_transforms({}, [tf('a', 1.0), tf('b', 2.0)])
-    merged = merge_static_transforms(first, [tf('c', 3.0), tf('a', 9.0)])
-    assert list(merged) == ['a', 'b', 'c']
-    assert merged['a'].transform.translation.x == 9.0
-    assert first['a'].transform.translation.x == 1.0
