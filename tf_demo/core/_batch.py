@@ -21,7 +21,7 @@ distinct frame and depth.  Cache reads use ``searchsorted`` and the same interpo
 as :class:`~tf_demo.core.time_cache.TimeCache`, so results equal the scalar walk.  Lanes that
 fail are only flagged: the caller replays them through the scalar walk, which raises tf2's exact
 exception.  The lane-wise lerp, slerp and composition are vectorised copies of
-:mod:`~tf_demo.core.math3d`'s, pinned to it (within 1e-12) by ``test/core/test_inlined_math.py``.
+:mod:`~tf_demo.core.math3d`'s, pinned to it (within 1e-12) by ``test/core/test_math3d_inlined.py``.
 """
 
 from __future__ import annotations

@@ -148,7 +148,7 @@ def _accumulate_side(
     This is one side of tf2's ``walkToTopParent`` with :meth:`TimeCache.get_data` (tf2's
     ``findClosest`` and ``interpolate``) inlined: per link only locals, no tuple per link.  The
     inlined lerp, slerp and composition are copies of :mod:`~tf_demo.core.math3d`'s, kept for
-    speed and pinned to it (within 1e-12) by ``test/core/test_inlined_math.py``.
+    speed and pinned to it (within 1e-12) by ``test/core/test_math3d_inlined.py``.
     The walk stops at ``stop``, at a frame without cache or data, at ``other`` (once its data
     was read) or after ``MAX_GRAPH_DEPTH`` steps.
 

@@ -390,7 +390,7 @@ class TimeCache:
 
         Cached until the next change (insert, prune, clear); treat them as read-only.  The
         interval constants are the batch walk's slerp, pinned to :func:`math3d.slerp
-        <tf_demo.core.math3d.slerp>` by ``test/core/test_inlined_math.py``.
+        <tf_demo.core.math3d.slerp>` by ``test/core/test_math3d_inlined.py``.
         """
         cached = self._arrays
         if cached is not None and cached.version == self._version:
