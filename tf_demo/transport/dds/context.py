@@ -23,15 +23,27 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 import threading
-from typing import TYPE_CHECKING
+from typing import Protocol
 import weakref
 
 from tf_demo.transport import dds_wire
 from tf_demo.transport.dds.graph import _Graph
+from tf_demo.transport.dds.graph import GraphNode
 
-if TYPE_CHECKING:
-    from tf_demo.transport.dds.executors import DdsExecutor
-    from tf_demo.transport.dds.node import DdsNode
+
+class _LiveNode(GraphNode, Protocol):
+    """What the context asks of a live node: its graph entry, creation order and destruction."""
+
+    _destroyed: bool
+    _creation_index: int
+
+    def destroy_node(self) -> None: ...
+
+
+class _Wakeable(Protocol):
+    """What the context asks of an executor at shutdown."""
+
+    def wake(self) -> None: ...
 
 
 class _Context:
@@ -42,8 +54,8 @@ class _Context:
         self.initialized = False
         self.shut_down = False
         self.args: list[str] = []
-        self.nodes: weakref.WeakSet[DdsNode] = weakref.WeakSet()
-        self.executors: weakref.WeakSet[DdsExecutor] = weakref.WeakSet()
+        self.nodes: weakref.WeakSet[_LiveNode] = weakref.WeakSet()
+        self.executors: weakref.WeakSet[_Wakeable] = weakref.WeakSet()
         self.graph: _Graph | None = None
 
     def ok(self) -> bool:

@@ -20,7 +20,7 @@ from collections.abc import Callable
 import inspect
 import time
 from typing import Any
-from typing import TYPE_CHECKING
+from typing import Protocol
 import weakref
 
 from tf_demo.transport.clock import Duration
@@ -28,8 +28,15 @@ from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
 from tf_demo.transport.qos import QoSProfile
 
-if TYPE_CHECKING:
-    from tf_demo.transport.dds.node import DdsNode
+
+class _EndpointOwner(Protocol):
+    """What a publisher or subscription asks of the node that created it."""
+
+    def get_logger(self) -> Any: ...
+
+    def destroy_publisher(self, publisher: DdsPublisher) -> bool: ...
+
+    def destroy_subscription(self, subscription: DdsSubscription) -> bool: ...
 
 
 _FLUSH_TIMEOUT_NS = 1_000_000_000
@@ -69,7 +76,7 @@ class DdsPublisher:
     """A publisher (rclpy ``Publisher`` subset): ``publish``, ``topic_name``, counts."""
 
     def __init__(
-        self, node: DdsNode, msg_type: Any, topic: str, qos_profile: Any, writer: Any
+        self, node: _EndpointOwner, msg_type: Any, topic: str, qos_profile: Any, writer: Any
     ) -> None:
         self._node_ref = weakref.ref(node)
         self.msg_type = msg_type
@@ -152,7 +159,7 @@ class DdsSubscription:
 
     def __init__(
         self,
-        node: DdsNode,
+        node: _EndpointOwner,
         msg_type: Any,
         topic: str,
         callback: Callable[[Any], Any],

@@ -18,13 +18,22 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 import threading
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from tf_demo.transport import dds_wire
 from tf_demo.transport.dds.endpoints import _FLUSH_TIMEOUT_NS
 
-if TYPE_CHECKING:
-    from tf_demo.transport.dds.node import DdsNode
+
+class GraphNode(Protocol):
+    """What the graph writer reads of a node: its names and the GUIDs of its endpoints."""
+
+    def get_name(self) -> str: ...
+
+    def get_namespace(self) -> str: ...
+
+    def _reader_gids(self) -> list[bytes]: ...
+
+    def _writer_gids(self) -> list[bytes]: ...
 
 
 class _Graph:
@@ -44,7 +53,7 @@ class _Graph:
         )
         self._lock = threading.Lock()
 
-    def publish(self, nodes: Iterable[DdsNode]) -> None:
+    def publish(self, nodes: Iterable[GraphNode]) -> None:
         from tf_demo.msgs import cdr
 
         messages = self._messages

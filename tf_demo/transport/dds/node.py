@@ -28,7 +28,7 @@ import itertools
 import threading
 from typing import Any
 from typing import cast
-from typing import TYPE_CHECKING
+from typing import Protocol
 import weakref
 
 from tf_demo.transport import dds_wire
@@ -53,8 +53,13 @@ from tf_demo.transport.dds.node_parameters import NodeParametersMixin
 from tf_demo.transport.dds.timers import DdsTimer
 from tf_demo.transport.dds_services import NodeServicesMixin
 
-if TYPE_CHECKING:
-    from tf_demo.transport.dds.executors import DdsExecutor
+
+class _NodeExecutor(Protocol):
+    """What a node asks of the executors that spin it."""
+
+    def wake(self) -> None: ...
+
+    def remove_node(self, node: DdsNode) -> None: ...
 
 
 _creation_counter = itertools.count()
@@ -145,7 +150,7 @@ class DdsNode(NodeParametersMixin, NodeServicesMixin):
         self._timers: list[DdsTimer] = []
         self._services: list[Any] = []
         self._clients: list[Any] = []
-        self._executors: weakref.WeakSet[DdsExecutor] = weakref.WeakSet()
+        self._executors: weakref.WeakSet[_NodeExecutor] = weakref.WeakSet()
         self._default_callback_group: CallbackGroup = MutuallyExclusiveCallbackGroup()
         self._clock = ROSClock()
         self._participant = _participant()
