@@ -49,6 +49,7 @@ from cyclonedds.builtin_types import cqos_to_qos
 from cyclonedds.builtin_types import endpoint_constructor
 from cyclonedds.qos import Policy
 from tf_demo.msgs import cdr
+from tf_demo.transport import dds_participant
 from tf_demo.transport import dds_wire
 from tf_demo.transport.dds.context import _graph_changed
 from tf_demo.transport.future import Future
@@ -76,7 +77,7 @@ _HEADER_SIZE = 4 + 16
 _REPLY_READER_WAIT_S = 0.1
 _POLL_S = 0.01
 
-_lib: Any = dds_wire._lib
+_lib: Any = dds_participant._lib
 _lib.dds_get_instance_handle.restype = ctypes.c_int32
 _lib.dds_get_instance_handle.argtypes = [ctypes.c_int32, ctypes.POINTER(ctypes.c_uint64)]
 for _name in ('dds_get_matched_subscriptions', 'dds_get_matched_publications'):
@@ -178,7 +179,9 @@ def parse_user_data(data: bytes) -> dict[str, str]:
 
 def _instance_handle(entity: int) -> int:
     handle = ctypes.c_uint64()
-    dds_wire._check(_lib.dds_get_instance_handle(entity, ctypes.byref(handle)), 'instance handle')
+    dds_participant._check(
+        _lib.dds_get_instance_handle(entity, ctypes.byref(handle)), 'instance handle'
+    )
     return int(handle.value)
 
 
