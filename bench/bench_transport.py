@@ -106,8 +106,8 @@ def run_sink(args: argparse.Namespace) -> None:
         subscription = listener.tf_sub
         insert = subscription.callback
 
-        def insert_and_count(msg: tf2_msgs.TFMessage) -> None:
-            insert(msg)
+        def insert_and_count(msg: bytes, info: dict[str, object]) -> None:
+            insert(msg, info)  # the listener's raw callback takes the sample info (its writer)
             on_message(msg)
 
         subscription.callback = insert_and_count
