@@ -107,7 +107,13 @@ def _rotated(q: Quat, angle: float, axis: Vec3, flip: bool) -> Quat:
     return math3d.quat_normalize(turned)
 
 
-axes = tfst.unit_quaternions().map(lambda q: (q[0], q[1], q[2])).filter(any)
+#: Rotation axes: the vector part of a unit quaternion, long enough to normalise (a vector like
+#: (0, 0, 1.5e-239) is not zero but its norm underflows: math3d refuses it as a zero axis).
+axes = (
+    tfst.unit_quaternions()
+    .map(lambda q: (q[0], q[1], q[2]))
+    .filter(lambda v: v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 1e-12)
+)
 
 
 # --- buffer_core._accumulate_side: the lookup walk -------------------------------------------
