@@ -98,16 +98,23 @@ def main() -> int:
             time.sleep(0.01)
     _say(f'flooded {args.count}')
     while not stop:
-        one_round()
-        tf.publish(
-            tf2_msgs.TFMessage(
-                transforms=[
-                    make_transform_stamped(
-                        'world', 'good', time.time_ns(), (7, 0, 0), (0, 0, 0, 1)
-                    )
-                ]
+        try:
+            one_round()
+            tf.publish(
+                tf2_msgs.TFMessage(
+                    transforms=[
+                        make_transform_stamped(
+                            'world', 'good', time.time_ns(), (7, 0, 0), (0, 0, 0, 1)
+                        )
+                    ]
+                )
             )
-        )
+        except Exception:
+            # Under rclpy, Ctrl-C shuts the context down from rclpy's signal handler, so a
+            # publish can fail before Python has even run this script's handler.
+            if stop or not transport.ok():
+                break
+            raise
         time.sleep(0.1)
     node.destroy_node()
     transport.try_shutdown()
