@@ -47,26 +47,6 @@ transforms:
 """
 
 
-EXECUTABLES = (
-    'static_tf_pub',
-    'dynamic_tf_pub',
-    'frame_broadcaster',
-    'tf_listener',
-    'odom_tf_broadcaster',
-    'point_transformer',
-    'robot_state_publisher',
-    'joint_state_publisher',
-    'tf_echo',
-    'static_transform_publisher',
-    'view_frames',
-    'tf_monitor',
-    'tf_doctor',
-    'tf_saver',
-    'tf_loader',
-    'tf_demo_live',
-)
-
-
 def executable_arguments(tmp_path: Path) -> dict[str, list[str]]:
     """Every executable of setup.py, with arguments that keep it running until stopped."""
     snapshot = tmp_path / 'snapshot.yaml'
@@ -102,9 +82,14 @@ def setup_py_executables() -> set[str]:
     return names
 
 
+#: Every node and tool setup.py installs (read from it, not a second list).
+EXECUTABLES = sorted(setup_py_executables())
+
+
 def test_every_executable_is_covered(tmp_path: Path) -> None:
     """The double Ctrl-C test runs every node and tool setup.py installs."""
-    assert set(EXECUTABLES) == set(executable_arguments(tmp_path)) == setup_py_executables()
+    assert set(EXECUTABLES) == set(executable_arguments(tmp_path))
+    assert {'static_tf_pub', 'tf_echo'} <= set(EXECUTABLES)  # the setup.py lists were read
 
 
 def catches_stop_signals(pid: int) -> bool:
