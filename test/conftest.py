@@ -18,6 +18,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from collections.abc import Iterator
+from collections.abc import Mapping
+from collections.abc import Sequence
 import contextlib
 import fcntl
 import importlib.util
@@ -30,6 +32,7 @@ import tempfile
 import threading
 import time
 from typing import IO
+from typing import TypeVar
 
 from hypothesis import settings
 import pytest
@@ -169,6 +172,37 @@ def dds_env(world_env: dict[str, str]) -> dict[str, str]:
     if WORLD != 'dds':
         pytest.skip('standalone world only (this run is the rclpy world)')
     return world_env
+
+
+_T = TypeVar('_T')
+
+
+def eventually(check: Callable[[], _T], timeout: float = 30.0, interval: float = 0.5) -> _T | None:
+    """Call ``check`` until it returns something true (returned) or ``timeout`` passes (None).
+
+    A bounded wait for what arrives from another process, not a timing assertion.
+    """
+    deadline = time.monotonic() + timeout
+    while True:
+        value = check()
+        if value:
+            return value
+        if time.monotonic() >= deadline:
+            return None
+        time.sleep(interval)
+
+
+def run_captured(
+    args: Sequence[str],
+    env: Mapping[str, str] | None = None,
+    *,
+    cwd: Path | None = None,
+    timeout: float = 60.0,
+) -> subprocess.CompletedProcess[str]:
+    """Run command line ``args`` to its end: output captured as text, the exit code unchecked."""
+    return subprocess.run(
+        list(args), env=env, cwd=cwd, capture_output=True, text=True, timeout=timeout, check=False
+    )
 
 
 def executable_command(name: str, *args: str) -> list[str]:

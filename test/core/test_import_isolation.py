@@ -17,11 +17,10 @@
 from __future__ import annotations
 
 import json
-from pathlib import Path
-import subprocess
 import sys
 
-REPO_ROOT = Path(__file__).resolve().parents[2]
+from conftest import REPO_ROOT
+from conftest import run_captured
 
 _CHILD = r"""
 import importlib.abc
@@ -54,14 +53,7 @@ print(json.dumps({'translation': result.translation, 'modules': loaded}))
 
 def test_core_imports_without_ros_or_dds():
     """With rclpy/cyclonedds/yaml blocked, tf_demo.core imports, works and loads only itself."""
-    completed = subprocess.run(
-        [sys.executable, '-c', _CHILD],
-        cwd=REPO_ROOT,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    completed = run_captured([sys.executable, '-c', _CHILD], cwd=REPO_ROOT)
     assert completed.returncode == 0, completed.stderr
     report = json.loads(completed.stdout)
     assert report['translation'] == [1.0, 2.0, 0.0]

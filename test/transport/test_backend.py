@@ -19,11 +19,11 @@ from pathlib import Path
 import subprocess
 import sys
 
+from conftest import REPO_ROOT
+from conftest import run_captured
 import pytest
 from tf_demo.transport.backend import BackendError
 from tf_demo.transport.backend import choose_backend
-
-REPO_ROOT = Path(__file__).resolve().parents[2]
 
 PROBE = (
     'import sys; import tf_demo.transport as t; '
@@ -32,21 +32,17 @@ PROBE = (
 )
 
 
-def run_probe(code: str, backend: str | None, extra_path: Path | None = None):
+def run_probe(
+    code: str, backend: str | None, extra_path: Path | None = None
+) -> subprocess.CompletedProcess[str]:
+    """Run ``code`` in a fresh Python with ``TF_DEMO_BACKEND`` set to ``backend`` (None: unset)."""
     env = dict(os.environ)
     env.pop('TF_DEMO_BACKEND', None)
     if backend is not None:
         env['TF_DEMO_BACKEND'] = backend
     paths = [str(REPO_ROOT)] + ([str(extra_path)] if extra_path else [])
     env['PYTHONPATH'] = os.pathsep.join(paths)
-    return subprocess.run(
-        [sys.executable, '-c', code],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    return run_captured([sys.executable, '-c', code], env)
 
 
 def test_choose_backend_rules() -> None:
