@@ -45,158 +45,125 @@ def joint(
     )
 
 
+def fixed_joints(*joints: str) -> str:
+    """Fixed joints, each written ``'name parent child'``."""
+    return ''.join(joint(*written.split()) for written in joints)
+
+
 LIMIT = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
 
-CASES = [
-    pytest.param(
+# id: (the robot description, the error class, a pattern its message matches)
+CASES: dict[str, tuple[str, type[UrdfError], str]] = {
+    'unclosed-element': (
         '<robot name="r"><link name="a"></robot>',
         UrdfMalformedError,
         r'^bad\.urdf:1: XML: malformed XML: .*link',
-        id='unclosed-element',
     ),
-    pytest.param('', UrdfMalformedError, r'^bad\.urdf:.*XML: malformed XML', id='empty'),
-    pytest.param(
+    'empty': ('', UrdfMalformedError, r'^bad\.urdf:.*XML: malformed XML'),
+    'truncated': (
         '<robot name="r"><link name="a"/>',
         UrdfMalformedError,
         r'^bad\.urdf:1: XML: malformed XML',
-        id='truncated',
     ),
-    pytest.param(
+    'not-robot': (
         '<sdf version="1.6"><model name="m"/></sdf>',
         UrdfMalformedError,
         r"^bad\.urdf:1: <sdf>: Could not find the 'robot' element",
-        id='not-robot',
     ),
-    pytest.param(
+    'robot-without-name': (
         '<robot><link name="a"/></robot>',
         UrdfMalformedError,
         r'^bad\.urdf:1: <robot>: No name given for the robot\.$',
-        id='robot-without-name',
     ),
-    pytest.param(
-        robot(''),
-        UrdfMalformedError,
-        r'<robot>: No link elements found in urdf file',
-        id='no-links',
-    ),
-    pytest.param(
+    'no-links': (robot(''), UrdfMalformedError, r'<robot>: No link elements found in urdf file'),
+    'unknown-joint-type': (
         robot(LINKS + joint('j', 'a', 'b', 'ball')),
         UrdfUnsupportedError,
         r"^bad\.urdf:2: joint 'j': Joint \[j\] has no known type \[ball\]",
-        id='unknown-joint-type',
     ),
-    pytest.param(
+    'joint-without-type': (
         robot(LINKS + '<joint name="j"><parent link="a"/><child link="b"/></joint>'),
         UrdfMalformedError,
         r"joint 'j': joint has no type attribute",
-        id='joint-without-type',
     ),
-    pytest.param(
-        robot(LINKS + joint('j', 'a', 'ghost') + joint('k', 'a', 'c')),
+    'missing-child-link': (
+        robot(LINKS + fixed_joints('j a ghost', 'k a c')),
         UrdfBrokenRefError,
         r"^bad\.urdf:2: joint 'j': child link \[ghost\] of joint \[j\] not found$",
-        id='missing-child-link',
     ),
-    pytest.param(
-        robot(LINKS + joint('j', 'ghost', 'b') + joint('k', 'a', 'c')),
+    'missing-parent-link': (
+        robot(LINKS + fixed_joints('j ghost b', 'k a c')),
         UrdfBrokenRefError,
         r"joint 'j': parent link \[ghost\] of joint \[j\] not found\. Every link",
-        id='missing-parent-link',
     ),
-    pytest.param(
+    'joint-without-parent': (
         robot(LINKS + '<joint name="j" type="fixed"><child link="b"/></joint>'),
         UrdfMalformedError,
         r"joint 'j': Joint \[j\] is missing a parent and/or child link specification",
-        id='joint-without-parent',
     ),
-    pytest.param(
-        robot(LINKS + joint('j', 'a', 'b') + joint('k', 'c', 'b')),
+    'link-with-two-parents': (
+        robot(LINKS + fixed_joints('j a b', 'k c b')),
         UrdfMalformedError,
         r"joint 'k': link 'b' is the child of two joints \('j' at line 2 and 'k'\)",
-        id='link-with-two-parents',
     ),
-    pytest.param(
+    'two-roots': (
         robot(LINKS + joint('j', 'a', 'b')),
         UrdfMalformedError,
         r'<robot>: Failed to find root link: 2 root links found: \[a\] and \[c\]',
-        id='two-roots',
     ),
-    pytest.param(
-        robot('<link name="a"/><link name="b"/>' + joint('j', 'a', 'b') + joint('k', 'b', 'a')),
+    'pure-cycle-no-root': (
+        robot('<link name="a"/><link name="b"/>' + fixed_joints('j a b', 'k b a')),
         UrdfMalformedError,
         r'<robot>: No root link found\. The robot xml is not a valid tree: links form a cycle '
         r'(a -> b -> a|b -> a -> b)',
-        id='pure-cycle-no-root',
     ),
-    pytest.param(
-        robot(
-            LINKS
-            + '<link name="d"/>'
-            + joint('j', 'a', 'b')
-            + joint('k', 'b', 'c')
-            + joint('l', 'c', 'd')
-            + joint('m', 'd', 'c')
-        ),
+    'cycle-with-two-parents': (
+        robot(LINKS + '<link name="d"/>' + fixed_joints('j a b', 'k b c', 'l c d', 'm d c')),
         UrdfMalformedError,
         r'link .c. is the child of two joints',
-        id='cycle-with-two-parents',
     ),
-    pytest.param(
-        robot(
-            LINKS
-            + '<link name="d"/>'
-            + joint('j', 'a', 'b')
-            + joint('k', 'd', 'c')
-            + joint('l', 'c', 'd')
-        ),
+    'cycle-beside-a-root': (
+        robot(LINKS + '<link name="d"/>' + fixed_joints('j a b', 'k d c', 'l c d')),
         UrdfMalformedError,
         r"joint '(k|l)': links form a cycle (c -> d -> c|d -> c -> d); they are not connected "
         r'to the root link \[a\]',
-        id='cycle-beside-a-root',
     ),
-    pytest.param(
+    'zero-axis': (
         robot(LINKS + joint('j', 'a', 'b', 'revolute', LIMIT + '<axis xyz="0 0 0"/>')),
         UrdfMalformedError,
         r"joint 'j' <axis>: axis 0 0 0 has no direction",
-        id='zero-axis',
     ),
-    pytest.param(
+    'axis-without-xyz': (
         robot(LINKS + joint('j', 'a', 'b', 'prismatic', LIMIT + '<axis/>')),
         UrdfMalformedError,
         r"joint 'j' <axis>: axis 0 0 0 has no direction",
-        id='axis-without-xyz',
     ),
-    pytest.param(
+    'revolute-without-limit': (
         robot(LINKS + joint('j', 'a', 'b', 'revolute')),
         UrdfMalformedError,
         r"joint 'j': a revolute joint needs a <limit> element",
-        id='revolute-without-limit',
     ),
-    pytest.param(
+    'prismatic-without-limit': (
         robot(LINKS + joint('j', 'a', 'b', 'prismatic')),
         UrdfMalformedError,
         r"joint 'j': a prismatic joint needs a <limit> element",
-        id='prismatic-without-limit',
     ),
-    pytest.param(
+    'limit-without-effort': (
         robot(LINKS + joint('j', 'a', 'b', 'revolute', '<limit lower="0" upper="1"/>')),
         UrdfMalformedError,
         r"joint 'j' <limit>: <limit> has no effort attribute",
-        id='limit-without-effort',
     ),
-    pytest.param(
+    'non-numeric-origin': (
         robot(LINKS + joint('j', 'a', 'b', extra='<origin xyz="1 two 3"/>')),
         UrdfMalformedError,
         r"^bad\.urdf:2: joint 'j' <origin>: attribute xyz=\"1 two 3\": two is not a number$",
-        id='non-numeric-origin',
     ),
-    pytest.param(
+    'two-component-rpy': (
         robot(LINKS + joint('j', 'a', 'b', extra='<origin rpy="0 0"/>')),
         UrdfMalformedError,
         r'attribute rpy="0 0" is not three numbers',
-        id='two-component-rpy',
     ),
-    pytest.param(
+    'non-numeric-limit': (
         robot(
             LINKS
             + joint(
@@ -209,27 +176,23 @@ CASES = [
         ),
         UrdfMalformedError,
         r"joint 'j' <limit>: attribute upper=\"1_0\" is not a number",
-        id='non-numeric-limit',
     ),
-    pytest.param(
+    'non-numeric-mimic': (
         robot(LINKS + joint('j', 'a', 'b', 'continuous', '<mimic joint="k" multiplier="x"/>')),
         UrdfMalformedError,
         r"joint 'j' <mimic>: attribute multiplier=\"x\" is not a number",
-        id='non-numeric-mimic',
     ),
-    pytest.param(
+    'duplicate-link': (
         robot('<link name="a"/>\n<link name="a"/>'),
         UrdfMalformedError,
         r"^bad\.urdf:3: link 'a': link 'a' is not unique \(first defined at line 2\)",
-        id='duplicate-link',
     ),
-    pytest.param(
+    'duplicate-joint': (
         robot(LINKS + joint('j', 'a', 'b') + '\n' + joint('j', 'a', 'c')),
         UrdfMalformedError,
         r"^bad\.urdf:3: joint 'j': joint 'j' is not unique \(first defined at line 2\)",
-        id='duplicate-joint',
     ),
-    pytest.param(
+    'mimic-cycle': (
         robot(
             LINKS
             + joint('j', 'a', 'b', 'continuous', '<mimic joint="k"/>')
@@ -237,26 +200,23 @@ CASES = [
         ),
         UrdfMalformedError,
         r"joint 'j' <mimic>: mimic joints form a cycle: j -> k -> j",
-        id='mimic-cycle',
     ),
-    pytest.param(
+    'mimic-of-itself': (
         robot(
             LINKS + joint('j', 'a', 'b', 'continuous', '<mimic joint="j"/>') + joint('k', 'b', 'c')
         ),
         UrdfMalformedError,
         r'mimic joints form a cycle: j -> j',
-        id='mimic-of-itself',
     ),
-    pytest.param(
+    'unsupported-version': (
         '<robot name="r" version="2.0"><link name="a"/></robot>',
         UrdfUnsupportedError,
         r'<robot>: unsupported URDF version "2\.0"',
-        id='unsupported-version',
     ),
-]
+}
 
 
-@pytest.mark.parametrize(('xml', 'error', 'pattern'), CASES)
+@pytest.mark.parametrize(('xml', 'error', 'pattern'), CASES.values(), ids=CASES.keys())
 def test_invalid_description_is_rejected_with_a_clear_message(
     xml: str, error: type[UrdfError], pattern: str
 ) -> None:

@@ -12,29 +12,23 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Hostile and odd robot descriptions: numbers, huge trees, mimics, unreadable files, xacro."""
+"""Hostile and odd robot descriptions: numbers, huge trees, mimics, the samples as -p values."""
 
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
 import re
 import shutil
 import subprocess
 
 import pytest
-from tf_demo.urdf import expand_xacro
 from tf_demo.urdf import JointPositionError
 from tf_demo.urdf import RobotModel
-from tf_demo.urdf import UrdfBrokenRefError
 from tf_demo.urdf import UrdfError
 from tf_demo.urdf import UrdfMalformedError
-from tf_demo.urdf.xacro_worker import MAX_INCLUDE_DEPTH
-from tf_demo.urdf.xacro_worker import MAX_MACRO_DEPTH
 
 SAMPLES = Path(__file__).resolve().parents[2] / 'urdf'
-XACRO_NS = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 LIMIT = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
 
 # -- every number goes through one parser -----------------------------------------------------
@@ -253,137 +247,6 @@ def test_deeply_nested_xml_is_refused_by_the_parser() -> None:
     xml = '<robot name="r"><link name="a">' + '<x>' * 10_000 + '</x>' * 10_000 + '</link></robot>'
     with pytest.raises(UrdfMalformedError, match=r'^bad\.urdf:1: XML: malformed XML: .*depth'):
         RobotModel.from_string(xml, source='bad.urdf')
-
-
-# -- files the loader reads --------------------------------------------------------------------
-
-
-def test_device_fifo_directory_huge_and_non_utf8_files_are_refused(tmp_path: Path) -> None:
-    """Bounded reads: /dev/zero is not read until memory runs out; each error names the file."""
-    with pytest.raises(UrdfError, match=r'^/dev/zero: file: not a regular file'):
-        RobotModel.from_file('/dev/zero')
-    fifo = tmp_path / 'fifo.urdf'
-    os.mkfifo(fifo)
-    with pytest.raises(UrdfError, match=rf'^{re.escape(str(fifo))}: file: not a regular file'):
-        RobotModel.from_file(fifo)
-    with pytest.raises(UrdfError, match=rf'^{re.escape(str(tmp_path))}: file: is a directory'):
-        RobotModel.from_file(tmp_path)
-    huge = tmp_path / 'huge.urdf'
-    with huge.open('wb') as handle:
-        handle.truncate(64 * 1024 * 1024)  # sparse: no disk used
-    with pytest.raises(UrdfError, match=r'huge\.urdf: file: file is larger than \d+ bytes'):
-        RobotModel.from_file(huge)
-    latin = tmp_path / 'latin.urdf'
-    latin.write_bytes(b'<robot name="r">\n<link name="caf\xe9"/>\n</robot>\n')
-    with pytest.raises(UrdfError, match=r'latin\.urdf:2: file: not UTF-8 text$'):
-        RobotModel.from_file(latin)
-    with pytest.raises(UrdfBrokenRefError, match=r'nope\.urdf: file: no such file$'):
-        RobotModel.from_file(tmp_path / 'nope.urdf')
-
-
-# -- xacro is code --------------------------------------------------------------------------
-
-
-def write_xacro(path: Path, body: str) -> Path:
-    path.write_text(f'<robot name="r" {XACRO_NS}>\n{body}\n</robot>\n', encoding='utf-8')
-    return path
-
-
-def worker_children() -> list[str]:
-    """Command lines of this process's children still alive that run the xacro worker."""
-    found = []
-    for entry in Path('/proc').iterdir():
-        if not entry.name.isdigit():
-            continue
-        try:
-            fields = (entry / 'stat').read_text().rsplit(')', 1)[1].split()
-            command = (entry / 'cmdline').read_bytes().replace(b'\0', b' ').decode()
-        except OSError:
-            continue
-        if int(fields[1]) == os.getpid() and 'xacro_worker' in command:
-            found.append(command)
-    return found
-
-
-def test_a_huge_expression_is_stopped_at_the_time_limit(tmp_path: Path) -> None:
-    """${9**9**9} does not hang: the child is killed at the limit and nothing is left running."""
-    path = write_xacro(tmp_path / 'big.xacro', '<link name="${9**9**9}"/>')
-    with pytest.raises(
-        UrdfMalformedError,
-        match=r'big\.xacro: xacro: expansion did not finish within 2 s and was stopped',
-    ):
-        expand_xacro(path, timeout_s=2.0)
-    assert worker_children() == []
-
-
-def test_a_macro_calling_itself_is_refused_at_the_nesting_limit(tmp_path: Path) -> None:
-    """A recursive macro is a clear error naming it, not a RecursionError."""
-    path = write_xacro(
-        tmp_path / 'rec.xacro',
-        '<link name="a"/><xacro:macro name="again"><xacro:again/></xacro:macro><xacro:again/>',
-    )
-    with pytest.raises(
-        UrdfMalformedError,
-        match=rf'rec\.xacro: xacro: xacro failed: macros nested deeper than {MAX_MACRO_DEPTH} '
-        r'\(again -> again -> again -> \.\.\. -> again -> again\)',
-    ):
-        RobotModel.from_file(path)
-
-
-def test_files_including_each_other_are_refused_at_the_nesting_limit(tmp_path: Path) -> None:
-    """A file including itself, and two files including each other: clear errors."""
-    itself = write_xacro(tmp_path / 'self.xacro', '<xacro:include filename="self.xacro"/>')
-    with pytest.raises(
-        UrdfMalformedError, match=rf'includes nested deeper than {MAX_INCLUDE_DEPTH} \(.*self'
-    ):
-        RobotModel.from_file(itself)
-    write_xacro(tmp_path / 'b.xacro', '<xacro:include filename="a.xacro"/>')
-    pair = write_xacro(tmp_path / 'a.xacro', '<xacro:include filename="b.xacro"/>')
-    with pytest.raises(UrdfMalformedError, match=r'a\.xacro: xacro: .*includes nested deeper'):
-        RobotModel.from_file(pair)
-
-
-def test_a_macro_chain_within_the_limit_expands(tmp_path: Path) -> None:
-    """Macros nested 60 deep (below the limit) expand into a 60-link chain."""
-    body = ['<link name="l0"/>']
-    for level in range(1, 61):
-        inner = f'<xacro:m{level + 1}/>' if level < 60 else ''
-        body.append(
-            f'<xacro:macro name="m{level}"><link name="l{level}"/>'
-            f'<joint name="j{level}" type="fixed"><parent link="l{level - 1}"/>'
-            f'<child link="l{level}"/></joint>{inner}</xacro:macro>'
-        )
-    body.append('<xacro:m1/>')
-    model = RobotModel.from_file(write_xacro(tmp_path / 'deep.xacro', '\n'.join(body)))
-    assert len(model.static_transforms()) == 60
-
-
-@pytest.mark.parametrize(
-    ('body', 'pattern'),
-    [
-        ('<link name="${1/0}"/>', r'xacro failed: .*division by zero'),
-        ('<link name="${nothing}"/>', r'xacro failed: .*nothing'),
-        ('<link name="${\'x\' * 10**10}"/>', r'(needs more than \d+ MiB of memory|killed by)'),
-        ('<xacro:include filename="/dev/zero"/>', r'/dev/zero: not a regular file'),
-        ('<link name="${load_yaml(\'/dev/zero\')}"/>', r'unacceptable character'),
-        ('<link name="${[].pop()}"/>', r'xacro failed: .*pop from empty list'),
-    ],
-    ids=['zero-division', 'undefined', 'huge-string', 'include-device', 'yaml-device', 'index'],
-)
-def test_errors_inside_xacro_code_are_urdf_errors(tmp_path: Path, body: str, pattern: str) -> None:
-    """Whatever the expressions raise (or exhaust) comes back as one UrdfError naming the file."""
-    path = write_xacro(tmp_path / 'code.xacro', body)
-    with pytest.raises(UrdfError, match=rf'^{re.escape(str(path))}: xacro: ') as caught:
-        RobotModel.from_file(path)
-    assert re.search(pattern, str(caught.value)), str(caught.value)
-
-
-def test_an_include_through_a_symlink_to_a_device_is_refused(tmp_path: Path) -> None:
-    """The included file is read with the bounded reader too."""
-    (tmp_path / 'parts.xacro').symlink_to('/dev/zero')
-    path = write_xacro(tmp_path / 'main.xacro', '<xacro:include filename="parts.xacro"/>')
-    with pytest.raises(UrdfError, match=r'parts\.xacro: not a regular file'):
-        RobotModel.from_file(path)
 
 
 # -- the sample robot on the command line -----------------------------------------------------

@@ -16,13 +16,16 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
+import re
 
 import pytest
 from tf_demo.urdf import find_package_share
 from tf_demo.urdf import parse_xacro_args
 from tf_demo.urdf import RobotModel
 from tf_demo.urdf import UrdfBrokenRefError
+from tf_demo.urdf import UrdfError
 from tf_demo.urdf import UrdfMalformedError
 
 SAMPLES = Path(__file__).resolve().parents[2] / 'urdf'
@@ -65,6 +68,12 @@ def test_xacro_args_are_parsed_like_the_command_line() -> None:
         parse_xacro_args('oops')
 
 
+def write_xacro(path: Path, body: str) -> Path:
+    """Write a xacro file: robot ``r`` (with the xacro namespace) holding ``body``."""
+    path.write_text(f'<robot name="r" {XACRO_NS}>\n{body}\n</robot>\n', encoding='utf-8')
+    return path
+
+
 def write_package(root: Path, name: str, files: dict[str, str]) -> Path:
     share = root / name
     for relative, text in files.items():
@@ -83,6 +92,11 @@ PARTS = f"""<robot {XACRO_NS}>
   </xacro:macro>
 </robot>
 """
+#: A robot that includes parts.xacro through $(find parts_pkg) and uses its arm macro.
+USES_PARTS = (
+    '<xacro:include filename="$(find parts_pkg)/urdf/parts.xacro"/>'
+    '<link name="base"/><xacro:arm parent="base"/>'
+)
 
 
 def test_find_and_package_include_resolve_through_package_paths(tmp_path: Path) -> None:
@@ -115,22 +129,15 @@ def test_find_uses_the_ament_prefix_path(tmp_path: Path, monkeypatch: pytest.Mon
     monkeypatch.setenv('AMENT_PREFIX_PATH', f'/nonexistent:{prefix}')
     monkeypatch.delenv('TF_DEMO_PACKAGE_PATH', raising=False)
     assert find_package_share('parts_pkg') == prefix / 'share' / 'parts_pkg'
-    main = tmp_path / 'r.xacro'
-    main.write_text(
-        f'<robot name="r" {XACRO_NS}>'
-        '<xacro:include filename="$(find parts_pkg)/urdf/parts.xacro"/>'
-        '<link name="base"/><xacro:arm parent="base"/></robot>'
-    )
-    assert RobotModel.from_file(main).root == 'base'
+    assert RobotModel.from_file(write_xacro(tmp_path / 'r.xacro', USES_PARTS)).root == 'base'
 
 
 def test_find_of_unknown_package_names_it(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """A missing package is a broken reference that names the package and the file."""
     monkeypatch.setenv('AMENT_PREFIX_PATH', '')
-    main = tmp_path / 'r.xacro'
-    main.write_text(
-        f'<robot name="r" {XACRO_NS}><xacro:include filename="$(find no_such_pkg)/a.xacro"/>'
-        '<link name="base"/></robot>'
+    main = write_xacro(
+        tmp_path / 'r.xacro',
+        '<xacro:include filename="$(find no_such_pkg)/a.xacro"/><link name="base"/>',
     )
     with pytest.raises(UrdfBrokenRefError, match=r"r\.xacro: xacro: .*package 'no_such_pkg' not"):
         RobotModel.from_file(main)
@@ -142,24 +149,20 @@ def test_xacro_errors_name_the_file(tmp_path: Path) -> None:
     undefined.write_text(f'<robot name="$(arg name)" {XACRO_NS}><link name="a"/></robot>')
     with pytest.raises(UrdfMalformedError, match=r'undefined\.xacro: xacro: xacro failed: .*name'):
         RobotModel.from_file(undefined)
-    broken = tmp_path / 'broken.xacro'
-    broken.write_text(f'<robot name="r" {XACRO_NS}><link name="a"></robot>')
+    broken = write_xacro(tmp_path / 'broken.xacro', '<link name="a">')
     with pytest.raises(UrdfMalformedError, match=r'broken\.xacro.*malformed XML'):
         RobotModel.from_file(broken)
-    missing_include = tmp_path / 'inc.xacro'
-    missing_include.write_text(
-        f'<robot name="r" {XACRO_NS}><xacro:include filename="gone.xacro"/></robot>'
-    )
+    missing_include = write_xacro(tmp_path / 'inc.xacro', '<xacro:include filename="gone.xacro"/>')
     with pytest.raises(UrdfBrokenRefError, match=r'inc\.xacro: xacro: .*gone\.xacro'):
         RobotModel.from_file(missing_include)
 
 
 def test_expanded_xacro_is_validated_like_urdf(tmp_path: Path) -> None:
     """xacro output goes through the same strict checks (here: a joint to a missing link)."""
-    bad = tmp_path / 'bad.urdf.xacro'
-    bad.write_text(
-        f'<robot name="r" {XACRO_NS}><link name="a"/><joint name="j" type="fixed">'
-        '<parent link="a"/><child link="ghost"/></joint></robot>'
+    bad = write_xacro(
+        tmp_path / 'bad.urdf.xacro',
+        '<link name="a"/><joint name="j" type="fixed"><parent link="a"/><child link="ghost"/>'
+        '</joint>',
     )
     with pytest.raises(UrdfBrokenRefError, match=r"bad\.urdf\.xacro:\d+: joint 'j': child link"):
         RobotModel.from_file(bad)
@@ -172,11 +175,31 @@ def test_package_path_variable_is_searched(
     write_package(tmp_path / 'elsewhere', 'parts_pkg', {'urdf/parts.xacro': PARTS})
     monkeypatch.setenv('TF_DEMO_PACKAGE_PATH', f'/nonexistent:{tmp_path / "elsewhere"}')
     monkeypatch.setenv('AMENT_PREFIX_PATH', '')
-    main = tmp_path / 'r.xacro'
-    main.write_text(
-        f'<robot name="r" {XACRO_NS}>'
-        '<xacro:include filename="$(find parts_pkg)/urdf/parts.xacro"/>'
-        '<link name="base"/><xacro:arm parent="base"/></robot>'
-    )
-    model = RobotModel.from_file(main)
+    model = RobotModel.from_file(write_xacro(tmp_path / 'r.xacro', USES_PARTS))
     assert [child for _, child, _, _ in model.static_transforms()] == ['arm_link']
+
+
+# -- files the loader reads --------------------------------------------------------------------
+
+
+def test_device_fifo_directory_huge_and_non_utf8_files_are_refused(tmp_path: Path) -> None:
+    """Bounded reads: /dev/zero is not read until memory runs out; each error names the file."""
+    with pytest.raises(UrdfError, match=r'^/dev/zero: file: not a regular file'):
+        RobotModel.from_file('/dev/zero')
+    fifo = tmp_path / 'fifo.urdf'
+    os.mkfifo(fifo)
+    with pytest.raises(UrdfError, match=rf'^{re.escape(str(fifo))}: file: not a regular file'):
+        RobotModel.from_file(fifo)
+    with pytest.raises(UrdfError, match=rf'^{re.escape(str(tmp_path))}: file: is a directory'):
+        RobotModel.from_file(tmp_path)
+    huge = tmp_path / 'huge.urdf'
+    with huge.open('wb') as handle:
+        handle.truncate(64 * 1024 * 1024)  # sparse: no disk used
+    with pytest.raises(UrdfError, match=r'huge\.urdf: file: file is larger than \d+ bytes'):
+        RobotModel.from_file(huge)
+    latin = tmp_path / 'latin.urdf'
+    latin.write_bytes(b'<robot name="r">\n<link name="caf\xe9"/>\n</robot>\n')
+    with pytest.raises(UrdfError, match=r'latin\.urdf:2: file: not UTF-8 text$'):
+        RobotModel.from_file(latin)
+    with pytest.raises(UrdfBrokenRefError, match=r'nope\.urdf: file: no such file$'):
+        RobotModel.from_file(tmp_path / 'nope.urdf')
