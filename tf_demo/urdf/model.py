@@ -93,22 +93,8 @@ def _moving_joint(joint: JointDescription) -> _MovingJoint:
         uy = qw * ay + qz * ax - qx * az
         uz = qw * az + qx * ay - qy * ax
         d = qx * ax + qy * ay + qz * az
-    return (
-        joint.name,
-        joint.type != 'prismatic',
-        joint.parent,
-        joint.child,
-        joint.xyz,
-        qx,
-        qy,
-        qz,
-        qw,
-        ux,
-        uy,
-        uz,
-        d,
-        kdl_quaternion(qx, qy, qz, qw),
-    )
+    names = (joint.name, joint.type != 'prismatic', joint.parent, joint.child)
+    return (*names, joint.xyz, qx, qy, qz, qw, ux, uy, uz, d, kdl_quaternion(qx, qy, qz, qw))
 
 
 class JointPositionError(ValueError):
@@ -257,28 +243,13 @@ class RobotModel:
         sin = math.sin
         cos = math.cos
         kdl_sign = kdl_quaternion
-        for (
-            name,
-            revolute,
-            parent,
-            child,
-            t,
-            qx,
-            qy,
-            qz,
-            qw,
-            ux,
-            uy,
-            uz,
-            d,
-            q0,
-        ) in self._moving_sorted:
+        for name, rev, parent, child, t, qx, qy, qz, qw, ux, uy, uz, d, q0 in self._moving_sorted:
             position = values.get(name)
             if position is None:
                 continue
             if position - position != 0.0:  # inf or nan (math.sin(inf) raises ValueError)
                 raise JointPositionError(name, position, name not in positions)
-            if not revolute:
+            if not rev:
                 append(
                     (
                         parent,

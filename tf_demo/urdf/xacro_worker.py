@@ -123,23 +123,24 @@ def _patched_xacro(package_paths: Sequence[str | Path] | None) -> Iterator[None]
             raise _nesting_error('includes', MAX_INCLUDE_DEPTH, [str(f) for f in stack])
         return original_include(elt, macros, symbols, func)
 
-    original_find = substitution_args._eval_find
-    original_dict_find = substitution_args._eval_dict['find']
-    xacro.abs_filename_spec = abs_filename
-    xacro.parse = parse
-    xacro.handle_macro_call = handle_macro_call
-    xacro.process_include = process_include
-    substitution_args._eval_find = find
-    substitution_args._eval_dict['find'] = find
+    def install(functions: dict[str, object], finds: tuple[object, object]) -> None:
+        for name, function in functions.items():
+            setattr(xacro, name, function)
+        substitution_args._eval_find, substitution_args._eval_dict['find'] = finds
+
+    patched: dict[str, object] = {
+        'abs_filename_spec': abs_filename,
+        'parse': parse,
+        'handle_macro_call': handle_macro_call,
+        'process_include': process_include,
+    }
+    originals = {name: getattr(xacro, name) for name in patched}
+    original_finds = (substitution_args._eval_find, substitution_args._eval_dict['find'])
+    install(patched, (find, find))
     try:
         yield
     finally:
-        xacro.abs_filename_spec = original_abs
-        xacro.parse = original_parse
-        xacro.handle_macro_call = original_macro_call
-        xacro.process_include = original_include
-        substitution_args._eval_find = original_find
-        substitution_args._eval_dict['find'] = original_dict_find
+        install(originals, original_finds)
 
 
 def expand_in_process(
