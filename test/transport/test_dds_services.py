@@ -38,11 +38,11 @@ from tf_demo.msgs import tf2_msgs
 from tf_demo.transport import dds_backend
 from tf_demo.transport import dds_services
 from tf_demo.transport import dds_wire
+from tf_demo.transport.dds.qos import qos_profile_rosout_default
 from tf_demo.transport.parameters import Parameter
 from tf_demo.transport.parameters import ParameterDescriptor
 from tf_demo.transport.parameters import SetParametersResult
 from tf_demo.transport.qos import qos_profile_parameter_events
-from tf_demo.transport.qos import qos_profile_rosout_default
 
 pytestmark = [pytest.mark.standalone, pytest.mark.dds]
 

@@ -29,7 +29,6 @@ from tf_demo.transport.qos import QoSProfile
 from tf_demo.transport.qos import ReliabilityPolicy
 from tf_demo.transport.qos import StaticBroadcasterQoS
 from tf_demo.transport.qos import StaticListenerQoS
-from tf_demo.transport.qos import validate_qos_or_depth
 
 
 def test_policy_values_match_rmw() -> None:
@@ -98,7 +97,10 @@ def test_int_policies_become_enums_and_profiles_compare_by_value() -> None:
 
 
 def test_int_depth_is_accepted_where_rclpy_accepts_it() -> None:
-    """An int stands for QoSProfile(depth=n); other types raise rclpy's TypeError."""
+    """An int stands for QoSProfile(depth=n) on a standalone node; else rclpy's TypeError."""
+    from tf_demo.transport.dds.qos import QoSProfile
+    from tf_demo.transport.dds.qos import validate_qos_or_depth
+
     assert validate_qos_or_depth(5) == QoSProfile(depth=5)
     profile = QoSProfile(depth=3)
     assert validate_qos_or_depth(profile) is profile

@@ -891,14 +891,19 @@ def test_clock_to_msg_gives_valid_stamps() -> None:
 
 
 # --------------------------------------------------------------------------------------------
-# rclpy_backend stays a pure pass-through, with the names the DDS backend has.
+# rclpy_backend stays a pure pass-through; each world facade takes one world's names.
 
-PASS_THROUGH_HELPERS = frozenset(
-    {'_public', 'qos_exports', 'clock_exports', 'parameter_exports', 'logging_exports'}
-)
 #: The one function that does more than pass through: ``init`` calls ``rclpy.init`` and turns
 #: rcl's refusal of the ``--ros-args`` into RosArgsError (rcl parses them, once).
 RCL_ERROR_TRANSLATORS = frozenset({'init'})
+#: rclpy_backend names whose rclpy object is spelled differently (rclpy nests the type enum).
+RENAMED = {'ParameterType': 'rclpy.parameter.Parameter.Type'}
+#: The modules that choose the world: standalone names when type checking or outside rclpy.
+WORLD_FACADES = ('callback_groups', 'clock', 'executors', 'logging', 'node', 'parameters', 'qos')
+RUNTIME_FUNCTIONS = frozenset(
+    {'init', 'shutdown', 'try_shutdown', 'ok', 'spin', 'spin_once',
+     'spin_until_future_complete', 'create_node', 'SingleThreadedExecutor'}
+)  # fmt: skip
 
 
 def _rclpy_backend_tree() -> ast.Module:
@@ -915,6 +920,16 @@ def _dotted(node: ast.expr) -> str | None:
     return None
 
 
+def _rclpy_backend_names() -> set[str]:
+    return {
+        target.id
+        for statement in _rclpy_backend_tree().body
+        if isinstance(statement, ast.Assign)
+        for target in statement.targets
+        if isinstance(target, ast.Name)
+    }
+
+
 def test_rclpy_backend_is_a_pure_pass_through() -> None:
     """Each module-level name is rclpy's object of the same name; no classes, no wrappers."""
     aliases = {}
@@ -922,10 +937,9 @@ def test_rclpy_backend_is_a_pure_pass_through() -> None:
         if isinstance(statement, ast.ClassDef):
             pytest.fail(f'rclpy_backend defines class {statement.name}: wrap nothing')
         if isinstance(statement, ast.FunctionDef):
-            assert statement.name in PASS_THROUGH_HELPERS | RCL_ERROR_TRANSLATORS, statement.name
-            if statement.name in RCL_ERROR_TRANSLATORS:
-                called = {_dotted(n.func) for n in ast.walk(statement) if isinstance(n, ast.Call)}
-                assert f'rclpy.{statement.name}' in called, statement.name
+            assert statement.name in RCL_ERROR_TRANSLATORS, statement.name
+            called = {_dotted(n.func) for n in ast.walk(statement) if isinstance(n, ast.Call)}
+            assert f'rclpy.{statement.name}' in called, statement.name
         if isinstance(statement, ast.Assign):
             (target,) = statement.targets
             assert isinstance(target, ast.Name)
@@ -933,70 +947,87 @@ def test_rclpy_backend_is_a_pure_pass_through() -> None:
                 continue  # a private handle on an rclpy module (the init error types)
             source = _dotted(statement.value)
             assert source is not None, ast.unparse(statement)
-            assert source.startswith('rclpy.'), ast.unparse(statement)
-            assert source.rsplit('.', 1)[-1] == target.id, ast.unparse(statement)
+            assert source.startswith(('rclpy.', 'rcl_interfaces.msg.')), ast.unparse(statement)
+            expected = RENAMED.get(target.id, f'{source.rsplit(".", 1)[0]}.{target.id}')
+            assert source == expected, ast.unparse(statement)
             aliases[target.id] = source
     assert aliases['Node'] == 'rclpy.node.Node'
 
 
+def _world_branches(module_name: str) -> tuple[dict[str, str], set[str]]:
+    """A facade's names: standalone branch (name -> its dds module), and its rclpy branch."""
+    path = REPO_ROOT / f'tf_demo/transport/{module_name}.py'
+    tree = ast.parse(path.read_text(encoding='utf-8'))
+    (selection,) = [statement for statement in tree.body if isinstance(statement, ast.If)]
+    assert ast.unparse(selection.test) == 'TYPE_CHECKING or not rclpy_world()'
+    standalone: dict[str, str] = {}
+    for statement in selection.body:
+        assert isinstance(statement, ast.ImportFrom), ast.unparse(statement)
+        standalone.update({alias.name: str(statement.module) for alias in statement.names})
+    rclpy_names: set[str] = set()
+    for statement in selection.orelse:
+        assert isinstance(statement, ast.ImportFrom), ast.unparse(statement)
+        assert statement.module == 'tf_demo.transport.rclpy_backend', ast.unparse(statement)
+        rclpy_names.update(alias.name for alias in statement.names)
+    return standalone, rclpy_names
+
+
+@pytest.mark.parametrize('module_name', WORLD_FACADES)
+def test_each_facade_takes_the_same_names_from_either_world(module_name: str) -> None:
+    """The standalone branch and the rclpy branch of a facade import the same names."""
+    standalone, rclpy_names = _world_branches(module_name)
+    assert set(standalone) == rclpy_names
+    assert all(source.startswith('tf_demo.transport.dds.') for source in standalone.values())
+    assert rclpy_names <= _rclpy_backend_names(), rclpy_names - _rclpy_backend_names()
+
+
+@pytest.mark.parametrize('module_name', WORLD_FACADES)
+def test_each_facade_holds_this_worlds_objects(module_name: str) -> None:
+    """Imported for real, a facade's world names are rclpy's objects or the standalone ones."""
+    import importlib
+
+    from tf_demo.transport.backend import rclpy_world
+
+    module = importlib.import_module(f'tf_demo.transport.{module_name}')
+    standalone, _ = _world_branches(module_name)
+    for name, source in standalone.items():
+        home = importlib.import_module(
+            'tf_demo.transport.rclpy_backend' if rclpy_world() else source
+        )
+        assert getattr(module, name) is getattr(home, name), name
+
+
 @pytest.mark.standalone  # imports the DDS backend
-def test_both_backends_offer_the_names_the_package_re_exports() -> None:
-    """Names tf_demo.transport forwards exist in rclpy_backend and in dds_backend alike."""
-    from tf_demo import transport
+def test_both_backends_offer_the_runtime_functions() -> None:
+    """What tf_demo.transport forwards to the backend exists in rclpy_backend and dds_backend."""
     from tf_demo.transport import dds_backend
 
-    defined = {
-        statement.targets[0].id  # type: ignore[attr-defined]
-        for statement in _rclpy_backend_tree().body
-        if isinstance(statement, ast.Assign)
-    } | RCL_ERROR_TRANSLATORS
-    forwarded = set(transport._REEXPORTED) | {
-        'init', 'shutdown', 'try_shutdown', 'ok', 'spin', 'spin_once',
-        'spin_until_future_complete', 'create_node',
-    }  # fmt: skip
-    assert forwarded <= defined, forwarded - defined
-    assert all(hasattr(dds_backend, name) for name in forwarded)
+    defined = _rclpy_backend_names() | RCL_ERROR_TRANSLATORS
+    assert defined >= RUNTIME_FUNCTIONS, RUNTIME_FUNCTIONS - defined
+    assert all(hasattr(dds_backend, name) for name in RUNTIME_FUNCTIONS)
 
 
 #: Public names of the node-API modules that stay tf_demo's own in the rclpy world.
 TF_DEMO_ONLY_NAMES = {
     'qos': {'DynamicBroadcasterQoS', 'DynamicListenerQoS', 'StaticBroadcasterQoS',
-            'StaticListenerQoS', 'validate_qos_or_depth'},  # tf2_ros's, built on rclpy's classes
+            'StaticListenerQoS'},  # tf2_ros's, built on rclpy's classes
     'clock': {'CLOCK_TOPIC', 'USE_SIM_TIME_NAME'},
-    'parameters': {'ParameterStore'},
+    'parameters': set(),
     'logging': {'DEFAULT_OUTPUT_FORMAT', 'Logger', 'format_log_line', 'set_default_logger_level'},
+    'node': set(),
+    'executors': set(),
+    'callback_groups': set(),
 }  # fmt: skip
-
-
-def _exported_names(function_name: str) -> set[str]:
-    """Names an ``*_exports()`` function of rclpy_backend hands over (string literals)."""
-    for statement in _rclpy_backend_tree().body:
-        if isinstance(statement, ast.FunctionDef) and statement.name == function_name:
-            constants: list[ast.expr] = []
-            for node in ast.walk(statement):
-                if isinstance(node, ast.List):
-                    constants.extend(node.elts)
-                if isinstance(node, ast.Subscript):
-                    constants.append(node.slice)
-            return {
-                c.value
-                for c in constants
-                if isinstance(c, ast.Constant) and isinstance(c.value, str)
-            }
-    pytest.fail(f'rclpy_backend has no {function_name}()')
 
 
 @pytest.mark.parametrize('module_name', sorted(TF_DEMO_ONLY_NAMES))
 def test_rclpy_world_replaces_every_rclpy_concept_of_the_node_api(module_name: str) -> None:
-    """In the rclpy world each public name of qos/clock/parameters/logging is rclpy's object."""
+    """In the rclpy world each public name of a facade is rclpy's, but tf_demo's own extras."""
     import importlib
 
     module = importlib.import_module(f'tf_demo.transport.{module_name}')
-    rclpy_concepts = set(module.__all__) - TF_DEMO_ONLY_NAMES[module_name]
-    function = {'qos': 'qos', 'clock': 'clock', 'parameters': 'parameter', 'logging': 'logging'}
-    exported = _exported_names(f'{function[module_name]}_exports')
-    missing = rclpy_concepts - exported
-    assert missing == set(), f'{module_name}: stays tf_demo-only under rclpy: {sorted(missing)}'
+    _, rclpy_names = _world_branches(module_name)
+    assert set(module.__all__) - TF_DEMO_ONLY_NAMES[module_name] == rclpy_names
 
 
 # --------------------------------------------------------------------------------------------

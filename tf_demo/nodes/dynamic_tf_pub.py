@@ -37,9 +37,9 @@ from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.ros.node_helpers import now_ns
 from tf_demo.ros.node_helpers import require_distinct_frames
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
-from tf_demo.transport import Node
 from tf_demo.transport import NodeConfigError
 from tf_demo.transport import run_node
+from tf_demo.transport.node import Node
 
 NODE_NAME = 'dynamic_tf_pub'
 
@@ -53,7 +53,7 @@ def circle_transform(radius: float, stamp_ns: int) -> tuple[Vec3, Quat]:
     )
 
 
-class DynamicTfPublisher(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class DynamicTfPublisher(Node):
     """Publishes the moving odom -> base_link transform on a timer."""
 
     def __init__(self) -> None:

@@ -33,13 +33,13 @@ from tf_demo.ros.node_helpers import now_ns
 from tf_demo.ros.node_helpers import require_distinct_frames
 from tf_demo.ros.node_helpers import rotation_from_values
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
-from tf_demo.transport import Node
 from tf_demo.transport import run_node
+from tf_demo.transport.node import Node
 
 NODE_NAME = 'frame_broadcaster'
 
 
-class FrameBroadcaster(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class FrameBroadcaster(Node):
     """Re-sends one fixed transform with a fresh stamp on a timer."""
 
     def __init__(self) -> None:

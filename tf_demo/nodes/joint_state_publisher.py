@@ -37,10 +37,10 @@ from typing import Any
 
 from tf_demo.nodes import non_ros_arguments
 from tf_demo.ros.node_helpers import rate_error
-from tf_demo.transport import Node
 from tf_demo.transport import run_node
 from tf_demo.transport.messages import sensor_msgs
 from tf_demo.transport.messages import std_msgs
+from tf_demo.transport.node import Node
 from tf_demo.transport.parameters import Parameter
 from tf_demo.transport.qos import DurabilityPolicy
 from tf_demo.transport.qos import QoSProfile
@@ -272,7 +272,7 @@ def dependent_joints_from_parameters(values: Mapping[str, Any]) -> dict[str, Dep
     return table
 
 
-class JointStatePublisher(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class JointStatePublisher(Node):
     """The joint_state_publisher node (see the module docstring)."""
 
     def __init__(self, urdf_file: str | None = None) -> None:

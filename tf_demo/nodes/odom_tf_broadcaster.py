@@ -30,8 +30,8 @@ from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.node_helpers import declare_flexible
 from tf_demo.ros.node_helpers import NodeConfigError
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
-from tf_demo.transport import Node
 from tf_demo.transport import run_node
+from tf_demo.transport.node import Node
 
 NODE_NAME = 'odom_tf_broadcaster'
 ODOM_QOS_DEPTH = 10
@@ -62,7 +62,7 @@ def transform_from_odometry(
     return out
 
 
-class OdomTfBroadcaster(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class OdomTfBroadcaster(Node):
     """Re-publishes odometry poses as transforms."""
 
     def __init__(self) -> None:

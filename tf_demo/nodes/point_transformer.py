@@ -32,8 +32,8 @@ from tf_demo.ros.node_helpers import as_period_s
 from tf_demo.ros.node_helpers import as_vector3
 from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.transform_listener import TransformListener
-from tf_demo.transport import Node
 from tf_demo.transport import run_node
+from tf_demo.transport.node import Node
 
 NODE_NAME = 'point_transformer'
 
@@ -47,7 +47,7 @@ def format_point(source: str, target: str, point_in: Any, point_out: Any) -> str
     )
 
 
-class PointTransformer(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class PointTransformer(Node):
     """Transforms one point into another frame on a timer."""
 
     def __init__(self) -> None:

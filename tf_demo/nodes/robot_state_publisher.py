@@ -44,13 +44,13 @@ from typing import Any
 from tf_demo.msgs.cdr import TfMessageEncoder
 from tf_demo.nodes import non_ros_arguments
 from tf_demo.ros.node_helpers import declare_qos_overrides
-from tf_demo.transport import Node
 from tf_demo.transport import run_node
 from tf_demo.transport.logging import get_logger
 from tf_demo.transport.messages import geometry_msgs
 from tf_demo.transport.messages import sensor_msgs
 from tf_demo.transport.messages import std_msgs
 from tf_demo.transport.messages import tf2_msgs
+from tf_demo.transport.node import Node
 from tf_demo.transport.parameters import Parameter
 from tf_demo.transport.parameters import SetParametersResult
 from tf_demo.transport.qos import DurabilityPolicy
@@ -233,7 +233,7 @@ _LATCHED = QoSProfile(
 )
 
 
-class RobotStatePublisher(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class RobotStatePublisher(Node):
     """The robot_state_publisher node (see the module docstring)."""
 
     def __init__(self, file_arguments: Sequence[str] = (), **kwargs: Any) -> None:

@@ -43,8 +43,8 @@ from tf_demo.ros.node_helpers import NodeConfigError
 from tf_demo.ros.node_helpers import now_ns
 from tf_demo.ros.node_helpers import rotation_from_values
 from tf_demo.ros.static_transform_broadcaster import StaticTransformBroadcaster
-from tf_demo.transport import Node
 from tf_demo.transport import run_node
+from tf_demo.transport.node import Node
 import yaml
 
 NODE_NAME = 'static_tf_pub'
@@ -182,7 +182,7 @@ def format_published(specs: list[StaticTransformSpec]) -> str:
     return '\n'.join(lines)
 
 
-class StaticTfPublisher(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class StaticTfPublisher(Node):
     """Publishes the configured static transforms once (latched)."""
 
     def __init__(self) -> None:

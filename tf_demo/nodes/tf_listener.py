@@ -32,9 +32,9 @@ from tf_demo.ros.node_helpers import as_frame
 from tf_demo.ros.node_helpers import as_period_s
 from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.transform_listener import TransformListener
-from tf_demo.transport import Node
 from tf_demo.transport import run_node
 from tf_demo.transport.clock import Time
+from tf_demo.transport.node import Node
 
 NODE_NAME = 'tf_listener'
 
@@ -53,7 +53,7 @@ def format_failure(target: str, source: str, reason: object) -> str:
     return f'Could not transform {target} to {source}: {reason}'
 
 
-class TfListenerNode(Node):  # type: ignore[misc]  # Node is the backend's class, resolved at run time
+class TfListenerNode(Node):
     """Periodically looks up one transform with a buffer filled by a listener."""
 
     def __init__(self) -> None:

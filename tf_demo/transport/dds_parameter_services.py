@@ -33,18 +33,18 @@ import weakref
 
 from tf_demo.msgs import rcl_interfaces
 from tf_demo.transport import dds_wire
-from tf_demo.transport.parameters import Parameter
-from tf_demo.transport.parameters import parameter_from_msg
-from tf_demo.transport.parameters import parameter_to_msg
-from tf_demo.transport.parameters import parameter_value_to_msg
-from tf_demo.transport.parameters import ParameterDescriptor
-from tf_demo.transport.parameters import ParameterException
-from tf_demo.transport.parameters import ParameterNotDeclaredException
-from tf_demo.transport.parameters import ParameterType
-from tf_demo.transport.parameters import ParameterUninitializedException
-from tf_demo.transport.parameters import SetParametersResult
-from tf_demo.transport.qos import qos_profile_parameter_events
-from tf_demo.transport.qos import qos_profile_parameters
+from tf_demo.transport.dds.parameters import Parameter
+from tf_demo.transport.dds.parameters import parameter_from_msg
+from tf_demo.transport.dds.parameters import parameter_to_msg
+from tf_demo.transport.dds.parameters import parameter_value_to_msg
+from tf_demo.transport.dds.parameters import ParameterDescriptor
+from tf_demo.transport.dds.parameters import ParameterException
+from tf_demo.transport.dds.parameters import ParameterNotDeclaredException
+from tf_demo.transport.dds.parameters import ParameterType
+from tf_demo.transport.dds.parameters import ParameterUninitializedException
+from tf_demo.transport.dds.parameters import SetParametersResult
+from tf_demo.transport.dds.qos import qos_profile_parameter_events
+from tf_demo.transport.dds.qos import qos_profile_parameters
 
 __all__ = [
     'ParameterEventPublisher',

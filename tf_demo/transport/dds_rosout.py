@@ -32,10 +32,10 @@ from tf_demo.msgs import builtin_interfaces
 from tf_demo.msgs import cdr
 from tf_demo.msgs import rcl_interfaces
 from tf_demo.transport import dds_wire
-from tf_demo.transport.logging import add_log_sink
-from tf_demo.transport.logging import LogRecord
-from tf_demo.transport.logging import remove_log_sink
-from tf_demo.transport.qos import qos_profile_rosout_default
+from tf_demo.transport.dds.logging import add_log_sink
+from tf_demo.transport.dds.logging import LogRecord
+from tf_demo.transport.dds.logging import remove_log_sink
+from tf_demo.transport.dds.qos import qos_profile_rosout_default
 
 __all__ = ['RosoutPublisher', 'log_message']
 

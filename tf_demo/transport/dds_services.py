@@ -52,8 +52,8 @@ from tf_demo.msgs import cdr
 from tf_demo.transport import dds_participant
 from tf_demo.transport import dds_wire
 from tf_demo.transport.dds.context import _graph_changed
+from tf_demo.transport.dds.qos import qos_profile_services_default
 from tf_demo.transport.future import Future
-from tf_demo.transport.qos import qos_profile_services_default
 
 __all__ = [
     'DdsClient',

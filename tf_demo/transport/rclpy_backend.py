@@ -16,16 +16,17 @@
 The rclpy world: a thin pass-through to rclpy's documented API.
 
 Nothing is wrapped: ``Node`` is ``rclpy.node.Node``, so a user's own rclpy node works wherever
-the package takes a node. The ``*_exports()`` functions hand rclpy's objects to
-:mod:`tf_demo.transport.qos`, ``clock``, ``parameters`` and ``logging`` under the names those
-modules define for the standalone world. This is the only module (with ``messages.py``) that
-imports rclpy.
+the package takes a node. It also names rclpy's time, QoS, parameter and logging objects
+as :mod:`tf_demo.transport.clock`, ``qos``, ``parameters`` and ``logging`` name the standalone
+ones; those facades import them from here in the rclpy world. This is the only module (with
+``messages.py``) that imports rclpy.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+import rcl_interfaces.msg
 import rclpy
 import rclpy.callback_groups
 import rclpy.clock
@@ -86,69 +87,59 @@ MutuallyExclusiveCallbackGroup = rclpy.callback_groups.MutuallyExclusiveCallback
 ReentrantCallbackGroup = rclpy.callback_groups.ReentrantCallbackGroup
 
 
-def _public(module: Any, names: list[str]) -> dict[str, Any]:
-    return {name: getattr(module, name) for name in names if hasattr(module, name)}
+# rclpy's objects under the names the facades (``clock``, ``qos``, ``parameters``,
+# ``logging``) give the standalone ones.
+Clock = rclpy.clock.Clock
+ClockChange = rclpy.clock.ClockChange
+ClockType = rclpy.clock.ClockType
+JumpHandle = rclpy.clock.JumpHandle
+JumpThreshold = rclpy.clock.JumpThreshold
+ROSClock = rclpy.clock.ROSClock
+TimeJump = rclpy.clock.TimeJump
+Time = rclpy.time.Time
+Duration = rclpy.duration.Duration
+Infinite = rclpy.duration.Infinite
+TimeSource = rclpy.time_source.TimeSource
 
+DurabilityPolicy = rclpy.qos.DurabilityPolicy
+HistoryPolicy = rclpy.qos.HistoryPolicy
+InvalidQoSProfileException = rclpy.qos.InvalidQoSProfileException
+LivelinessPolicy = rclpy.qos.LivelinessPolicy
+QoSDurabilityPolicy = rclpy.qos.QoSDurabilityPolicy
+QoSHistoryPolicy = rclpy.qos.QoSHistoryPolicy
+QoSLivelinessPolicy = rclpy.qos.QoSLivelinessPolicy
+QoSPresetProfiles = rclpy.qos.QoSPresetProfiles
+QoSProfile = rclpy.qos.QoSProfile
+QoSReliabilityPolicy = rclpy.qos.QoSReliabilityPolicy
+ReliabilityPolicy = rclpy.qos.ReliabilityPolicy
+qos_profile_action_status_default = rclpy.qos.qos_profile_action_status_default
+qos_profile_best_available = rclpy.qos.qos_profile_best_available
+qos_profile_default = rclpy.qos.qos_profile_default
+qos_profile_parameter_events = rclpy.qos.qos_profile_parameter_events
+qos_profile_parameters = rclpy.qos.qos_profile_parameters
+qos_profile_sensor_data = rclpy.qos.qos_profile_sensor_data
+qos_profile_services_default = rclpy.qos.qos_profile_services_default
+qos_profile_system_default = rclpy.qos.qos_profile_system_default
+qos_profile_unknown = rclpy.qos.qos_profile_unknown
 
-def qos_exports() -> dict[str, Any]:
-    """Return rclpy's QoS objects under the names of :mod:`tf_demo.transport.qos`."""
-    exports = _public(
-        rclpy.qos,
-        [
-            'DurabilityPolicy', 'HistoryPolicy', 'InvalidQoSProfileException',
-            'LivelinessPolicy', 'QoSDurabilityPolicy', 'QoSHistoryPolicy',
-            'QoSLivelinessPolicy', 'QoSPresetProfiles', 'QoSProfile', 'QoSReliabilityPolicy',
-            'ReliabilityPolicy', 'qos_profile_action_status_default', 'qos_profile_best_available',
-            'qos_profile_default',
-            'qos_profile_parameter_events', 'qos_profile_parameters',
-            'qos_profile_rosout_default', 'qos_profile_sensor_data',
-            'qos_profile_services_default', 'qos_profile_system_default', 'qos_profile_unknown',
-        ],
-    )  # fmt: skip
-    return exports
+InvalidParameterException = rclpy.exceptions.InvalidParameterException
+InvalidParameterTypeException = rclpy.exceptions.InvalidParameterTypeException
+InvalidParameterValueException = rclpy.exceptions.InvalidParameterValueException
+ParameterAlreadyDeclaredException = rclpy.exceptions.ParameterAlreadyDeclaredException
+ParameterException = rclpy.exceptions.ParameterException
+ParameterImmutableException = rclpy.exceptions.ParameterImmutableException
+ParameterNotDeclaredException = rclpy.exceptions.ParameterNotDeclaredException
+ParameterUninitializedException = rclpy.exceptions.ParameterUninitializedException
+Parameter = rclpy.parameter.Parameter
+ParameterType = rclpy.parameter.Parameter.Type
+FloatingPointRange = rcl_interfaces.msg.FloatingPointRange
+IntegerRange = rcl_interfaces.msg.IntegerRange
+ParameterDescriptor = rcl_interfaces.msg.ParameterDescriptor
+SetParametersResult = rcl_interfaces.msg.SetParametersResult
 
-
-def clock_exports() -> dict[str, Any]:
-    """Return rclpy's time and clock objects under the names of ``clock``."""
-    exports = _public(
-        rclpy.clock,
-        ['Clock', 'ClockChange', 'ClockType', 'JumpHandle', 'JumpThreshold', 'ROSClock',
-         'TimeJump'],
-    )  # fmt: skip
-    exports['Time'] = rclpy.time.Time
-    exports['Duration'] = rclpy.duration.Duration
-    exports.update(_public(rclpy.duration, ['Infinite']))
-    exports['TimeSource'] = rclpy.time_source.TimeSource
-    return exports
-
-
-def parameter_exports() -> dict[str, Any]:
-    """Return rclpy's parameter objects under the names of ``parameters``."""
-    from rcl_interfaces.msg import FloatingPointRange
-    from rcl_interfaces.msg import IntegerRange
-    from rcl_interfaces.msg import ParameterDescriptor
-    from rcl_interfaces.msg import SetParametersResult
-
-    exports = _public(
-        rclpy.exceptions,
-        ['InvalidParameterException', 'InvalidParameterTypeException',
-         'InvalidParameterValueException', 'ParameterAlreadyDeclaredException',
-         'ParameterException', 'ParameterImmutableException', 'ParameterNotDeclaredException',
-         'ParameterUninitializedException'],
-    )  # fmt: skip
-    exports['Parameter'] = rclpy.parameter.Parameter
-    exports['ParameterType'] = rclpy.parameter.Parameter.Type
-    exports['ParameterDescriptor'] = ParameterDescriptor
-    exports['FloatingPointRange'] = FloatingPointRange
-    exports['IntegerRange'] = IntegerRange
-    exports['SetParametersResult'] = SetParametersResult
-    return exports
-
-
-def logging_exports() -> dict[str, Any]:
-    """Return rclpy's logging functions under the names of ``logging``."""
-    return _public(
-        rclpy.logging,
-        ['LoggingSeverity', 'get_logger', 'get_logger_effective_level', 'get_logger_level',
-         'get_logging_severity_from_string', 'set_logger_level'],
-    )  # fmt: skip
+LoggingSeverity = rclpy.logging.LoggingSeverity
+get_logger = rclpy.logging.get_logger
+get_logger_effective_level = rclpy.logging.get_logger_effective_level
+get_logger_level = rclpy.logging.get_logger_level
+get_logging_severity_from_string = rclpy.logging.get_logging_severity_from_string
+set_logger_level = rclpy.logging.set_logger_level

@@ -130,7 +130,7 @@ def _participant() -> dds_wire.DdsParticipant:
 
 
 def _warn_process(text: str) -> None:
-    from tf_demo.transport.logging import get_logger
+    from tf_demo.transport.dds.logging import get_logger
 
     get_logger('tf_demo.dds').warning(text)
 

@@ -23,10 +23,10 @@ from typing import Any
 from typing import Protocol
 import weakref
 
-from tf_demo.transport.clock import Duration
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
-from tf_demo.transport.qos import QoSProfile
+from tf_demo.transport.dds.qos import QoSProfile
+from tf_demo.transport.dds.time import Duration
 
 
 class _EndpointOwner(Protocol):

@@ -28,8 +28,8 @@ from typing import TYPE_CHECKING
 from typing import TypeAlias
 
 from tf_demo.transport import dds_wire
-from tf_demo.transport.clock import ROSClock
 from tf_demo.transport.dds.callback_groups import CallbackGroup
+from tf_demo.transport.dds.clock import ROSClock
 from tf_demo.transport.dds.context import _context
 from tf_demo.transport.dds.context import _participant
 from tf_demo.transport.dds.tasks import DdsTask

@@ -32,11 +32,10 @@ from typing import Protocol
 import weakref
 
 from tf_demo.transport import dds_wire
-from tf_demo.transport.clock import Clock
-from tf_demo.transport.clock import ROSClock
-from tf_demo.transport.clock import TimeSource
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
+from tf_demo.transport.dds.clock import Clock
+from tf_demo.transport.dds.clock import ROSClock
 from tf_demo.transport.dds.context import _context
 from tf_demo.transport.dds.context import _graph_changed
 from tf_demo.transport.dds.context import _participant
@@ -50,6 +49,7 @@ from tf_demo.transport.dds.names import expand_topic_name
 from tf_demo.transport.dds.names import validate_namespace
 from tf_demo.transport.dds.names import validate_node_name
 from tf_demo.transport.dds.node_parameters import NodeParametersMixin
+from tf_demo.transport.dds.time_source import TimeSource
 from tf_demo.transport.dds.timers import DdsTimer
 from tf_demo.transport.dds_services import NodeServicesMixin
 
@@ -105,9 +105,9 @@ class DdsNode(NodeParametersMixin, NodeServicesMixin):
     ) -> None:
         del context, enable_logger_service
         from tf_demo.transport import ros_args
+        from tf_demo.transport.dds.logging import get_logger
+        from tf_demo.transport.dds.parameter_store import ParameterStore
         from tf_demo.transport.dds_parameter_services import NodeInterfaces
-        from tf_demo.transport.logging import get_logger
-        from tf_demo.transport.parameters import ParameterStore
 
         if not _context.ok():
             msg = (

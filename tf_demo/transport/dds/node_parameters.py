@@ -23,7 +23,7 @@ from typing import Any
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from tf_demo.transport.parameters import ParameterStore
+    from tf_demo.transport.dds.parameter_store import ParameterStore
 
 
 class NodeParametersMixin:

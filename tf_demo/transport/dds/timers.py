@@ -20,9 +20,9 @@ from collections.abc import Callable
 import threading
 from typing import Any
 
-from tf_demo.transport.clock import Clock
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
+from tf_demo.transport.dds.clock import Clock
 
 
 class DdsTimer:

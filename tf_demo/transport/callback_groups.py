@@ -1,0 +1,41 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The world's callback groups: rclpy's in the rclpy world, else the standalone ones.
+
+Chosen once, when the module is first imported; the type checker sees the standalone classes
+(:mod:`tf_demo.transport.dds.callback_groups`).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from tf_demo.transport.backend import rclpy_world
+
+if TYPE_CHECKING or not rclpy_world():
+    from tf_demo.transport.dds.callback_groups import CallbackGroup
+    from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
+    from tf_demo.transport.dds.callback_groups import ReentrantCallbackGroup
+else:  # pragma: no cover - needs a ROS 2 installation
+    from tf_demo.transport.rclpy_backend import CallbackGroup
+    from tf_demo.transport.rclpy_backend import MutuallyExclusiveCallbackGroup
+    from tf_demo.transport.rclpy_backend import ReentrantCallbackGroup
+
+__all__ = [
+    'CallbackGroup',
+    'MutuallyExclusiveCallbackGroup',
+    'ReentrantCallbackGroup',
+]
