@@ -25,6 +25,7 @@ import subprocess
 import sys
 import time
 
+from conftest import run_captured
 import pytest
 from tf_demo.cli._snapshot import read_snapshot
 from tf_demo.cli.formatting import ECHO_USAGE
@@ -658,14 +659,7 @@ def test_upstream_names_are_aliases_of_the_tools(world_env, alias, tool):
 
     scripts = {e.name: e.value for e in entry_points(group='console_scripts')}
     assert scripts[alias] == scripts[tool] == f'tf_demo.cli.{tool}:main'
-    completed = subprocess.run(
-        [str(installed_script(alias)), 'only_one'],
-        env=world_env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    completed = run_captured([str(installed_script(alias)), 'only_one'], world_env)
     if tool == 'tf_monitor':
         assert completed.returncode == 255
         assert completed.stderr.endswith('[]: TF_Monitor: usage: tf2_monitor framea frameb\n')

@@ -21,10 +21,10 @@ Only :func:`format_log_line`, the standalone world's formatter, is tested on its
 
 from pathlib import Path
 import re
-import subprocess
 import sys
 from typing import Any
 
+from conftest import run_captured
 import pytest
 from tf_demo.transport.clock import Clock
 from tf_demo.transport.clock import ClockType
@@ -130,14 +130,8 @@ def run_logging_script(
     environment.pop('RCUTILS_CONSOLE_OUTPUT_FORMAT', None)
     environment.pop('RCUTILS_LOGGING_USE_STDOUT', None)
     environment.update(env)
-    completed = subprocess.run(
-        [sys.executable, str(path), '--ros-args', *ros_args],
-        env=environment,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=True,
-    )
+    completed = run_captured([sys.executable, str(path), '--ros-args', *ros_args], environment)
+    assert completed.returncode == 0, completed.stderr
     assert completed.stdout == ''
     return completed.stderr.splitlines()
 

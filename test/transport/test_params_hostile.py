@@ -27,13 +27,17 @@ from __future__ import annotations
 import math
 from pathlib import Path
 import re
-import subprocess
 from typing import Any
 
 from conftest import executable_command
+from conftest import run_captured
 from conftest import WORLD
 import pytest
-from tf_demo.transport.ros_args import MAX_YAML_NESTING
+from tf_demo.transport.params_file import params_file_entries
+from tf_demo.transport.params_yaml import MAX_YAML_NESTING
+from tf_demo.transport.params_yaml import PureYamlEventLoader
+from tf_demo.transport.params_yaml import YAML_EVENT_LOADER
+from tf_demo.transport.params_yaml import yaml_events
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import RosArgsError
 
@@ -394,13 +398,10 @@ def test_node_with_hostile_parameters_exits_1_with_one_line(
     tmp_path: Path, world_env: dict[str, str], make_args: Any, expected: str
 ) -> None:
     """dynamic_tf_pub given a hostile -p or params file: usage, one error line, exit 1."""
-    completed = subprocess.run(
+    completed = run_captured(
         executable_command('dynamic_tf_pub', '--ros-args', *make_args(tmp_path)),
-        env=world_env,
-        capture_output=True,
-        text=True,
+        world_env,
         timeout=120,
-        check=False,
     )
     assert completed.returncode == 1, completed.stderr
     assert 'Traceback' not in completed.stderr
@@ -412,14 +413,8 @@ def test_node_with_hostile_parameters_exits_1_with_one_line(
 
 def test_pure_and_libyaml_loaders_agree_on_every_accepted_file(tmp_path: Path) -> None:
     """The pure-Python fallback reads the accepted file as libyaml does."""
-    from tf_demo.transport import ros_args
-
     path = _params(tmp_path, ACCEPTED)
-    events = list(
-        ros_args._yaml_events(path.read_text(encoding='utf-8'), ros_args.PureYamlEventLoader)
-    )
-    pure = ros_args._params_file_entries(iter(events))
-    libyaml = ros_args._params_file_entries(
-        ros_args._yaml_events(path.read_text(encoding='utf-8'), ros_args.YAML_EVENT_LOADER)
-    )
+    events = list(yaml_events(path.read_text(encoding='utf-8'), PureYamlEventLoader))
+    pure = params_file_entries(iter(events))
+    libyaml = params_file_entries(yaml_events(path.read_text(encoding='utf-8'), YAML_EVENT_LOADER))
     assert repr(pure) == repr(libyaml)

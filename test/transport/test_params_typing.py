@@ -33,9 +33,10 @@ import sys
 from typing import Any
 
 from conftest import ProcessOutput
+from conftest import run_captured
 import pytest
-from tf_demo.transport import ros_args
-from tf_demo.transport.ros_args import parse_param_value
+from tf_demo.transport.params_yaml import parse_param_value
+from tf_demo.transport.params_yaml import PureYamlEventLoader
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import RosArgsError
 
@@ -151,7 +152,7 @@ def _case_id(text: str) -> str:
 )
 def test_our_parser_types_each_form_as_rcl(text: str, type_name: str, expected: Any) -> None:
     """Each -p form gets rcl's type and value, with libyaml and with the pure scanner."""
-    for loader in (None, ros_args.PureYamlEventLoader):
+    for loader in (None, PureYamlEventLoader):
         value = parse_param_value(text, loader=loader)
         assert _type_name(value) == type_name
         assert _same(value, expected), (value, expected)
@@ -285,13 +286,8 @@ def test_the_table_is_rcls_by_ros2_param_get(world_env: dict[str, str], tmp_path
         probe.wait_for_line('probe ready', timeout=60)
 
         def get(index: int) -> subprocess.CompletedProcess[str]:
-            return subprocess.run(
-                [*ROS2_PARAM_GET, '/typing_probe', f'p{index:03d}'],
-                env=world_env,
-                capture_output=True,
-                text=True,
-                timeout=120,
-                check=False,
+            return run_captured(
+                [*ROS2_PARAM_GET, '/typing_probe', f'p{index:03d}'], world_env, timeout=120
             )
 
         with ThreadPoolExecutor(max_workers=4) as pool:

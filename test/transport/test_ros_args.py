@@ -16,13 +16,13 @@
 
 import os
 from pathlib import Path
-import subprocess
 import sys
 
+from conftest import run_captured
 import pytest
-from tf_demo.transport.logging import LoggingSeverity
+from tf_demo.transport.dds.log_format import LoggingSeverity
+from tf_demo.transport.params_yaml import parse_param_value
 from tf_demo.transport.ros_args import expand_topic_name
-from tf_demo.transport.ros_args import parse_param_value
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import remove_ros_args
 from tf_demo.transport.ros_args import resolve_node_arguments
@@ -359,14 +359,7 @@ def test_executable_with_bad_arguments_exits_1_with_usage(
     script = tmp_path / 'node.py'
     script.write_text(NODE_SCRIPT, encoding='utf-8')
     env = dict(os.environ, PYTHONPATH=str(REPO_ROOT), TF_DEMO_BACKEND='dds')
-    completed = subprocess.run(
-        [sys.executable, str(script), '--ros-args', *ros_args],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    completed = run_captured([sys.executable, str(script), '--ros-args', *ros_args], env)
     assert completed.returncode == 1
     lines = completed.stderr.strip().splitlines()
     assert lines[0].startswith('usage: node.py ')

@@ -33,13 +33,17 @@ from hypothesis import HealthCheck
 from hypothesis import settings
 from hypothesis import strategies as st
 import pytest
-from tf_demo.transport import ros_args
-from tf_demo.transport.ros_args import parse_param_value
+from tf_demo.transport.params_file import params_file_entries
+from tf_demo.transport.params_typing import rcl_scalar
+from tf_demo.transport.params_yaml import EventLoader
+from tf_demo.transport.params_yaml import LIBYAML_AVAILABLE
+from tf_demo.transport.params_yaml import parse_param_value
+from tf_demo.transport.params_yaml import PureYamlEventLoader
+from tf_demo.transport.params_yaml import YAML_EVENT_LOADER
+from tf_demo.transport.params_yaml import yaml_events
 from tf_demo.transport.ros_args import parse_ros_args
-from tf_demo.transport.ros_args import rcl_scalar
 from tf_demo.transport.ros_args import resolve_node_arguments
 from tf_demo.transport.ros_args import RosArgsError
-from tf_demo.transport.ros_args import YAML_EVENT_LOADER
 import yaml
 
 pytestmark = [pytest.mark.property, pytest.mark.timeout(240)]
@@ -119,7 +123,7 @@ def test_any_command_line_parses_or_raises_ros_args_error(argv: list[str]) -> No
 @given(yaml_text)
 def test_any_p_value_is_typed_or_refused(text: str) -> None:
     """Any -p value: a bool, int, double, string or homogeneous list, or a ValueError."""
-    for loader in (None, ros_args.PureYamlEventLoader):
+    for loader in (None, PureYamlEventLoader):
         try:
             value = parse_param_value(text, loader=loader)
         except ValueError:
@@ -157,17 +161,17 @@ def test_huge_integers_are_typed_without_int_conversion_limits(digits: int, pref
 @given(st.text(alphabet=st.sampled_from(list('ab</="\t\n -!.')), max_size=40))
 def test_pure_scanner_reads_urdf_like_values_as_libyaml(text: str) -> None:
     """The pure fallback and libyaml agree on URDF-like plain values, tabs included."""
-    if not ros_args.LIBYAML_AVAILABLE:
+    if not LIBYAML_AVAILABLE:
         pytest.skip('libyaml is not available to compare with')
     text = '<' + text
 
-    def outcome(loader: Any) -> object:
+    def outcome(loader: EventLoader) -> object:
         try:
             return repr(parse_param_value(text, loader=loader))
         except ValueError:
             return ValueError
 
-    assert outcome(ros_args.YAML_EVENT_LOADER) == outcome(ros_args.PureYamlEventLoader)
+    assert outcome(YAML_EVENT_LOADER) == outcome(PureYamlEventLoader)
 
 
 def _parse_file(data: bytes) -> None:
@@ -230,7 +234,7 @@ def test_nesting_and_memory_are_bounded(levels: int, opener: str, in_file: bool)
     try:
         with contextlib.suppress(ValueError):
             if in_file:
-                ros_args._params_file_entries(ros_args._yaml_events(text, YAML_EVENT_LOADER))
+                params_file_entries(yaml_events(text, YAML_EVENT_LOADER))
             else:
                 parse_ros_args(['--ros-args', '-p', f'x:={body}'])
         _, peak = tracemalloc.get_traced_memory()
