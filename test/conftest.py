@@ -31,6 +31,7 @@ import sys
 import tempfile
 import threading
 import time
+from typing import Any
 from typing import IO
 from typing import TypeVar
 
@@ -79,6 +80,16 @@ STANDALONE_ONLY = (
     'standalone world only: needs the cyclonedds Python package (pip install tf_demo[dds])'
 )
 """Reason for ``pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)`` in test modules."""
+
+PARAMETER_SERVICES = (
+    'describe_parameters',
+    'get_parameter_types',
+    'get_parameters',
+    'list_parameters',
+    'set_parameters',
+    'set_parameters_atomically',
+)
+"""The suffixes of the six parameter services every ROS 2 node offers (rcl), in sorted order."""
 
 # The import shims of test/upstream are packages named tf2_ros and tf2_geometry_msgs: never
 # collect (import) them as tests.
@@ -171,6 +182,15 @@ def dds_env(world_env: dict[str, str]) -> dict[str, str]:
     """:func:`world_env` for a standalone-only test (mark it ``standalone``): forces DDS."""
     if WORLD != 'dds':
         pytest.skip('standalone world only (this run is the rclpy world)')
+    return world_env
+
+
+@pytest.fixture
+def jazzy_env(world_env: dict[str, str]) -> dict[str, str]:
+    """:func:`world_env` of a ROS-world test with tf_demo installed in the sourced workspace."""
+    from ros_world.jazzy import require_installed_tf_demo
+
+    require_installed_tf_demo(world_env)
     return world_env
 
 
@@ -363,3 +383,54 @@ def ros(world_env: dict[str, str]) -> Iterator[None]:
         yield
     finally:
         transport.shutdown()
+
+
+class Spinning:
+    """Nodes of this run's world in this process, spun by one executor thread once started."""
+
+    def __init__(self) -> None:
+        from tf_demo import transport
+
+        self._transport = transport
+        self.nodes: list[Any] = []
+        self.executor = transport.SingleThreadedExecutor()
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+
+    def add(self, node: Any) -> Any:
+        """Spin ``node`` too (destroyed at the end); return it."""
+        self.nodes.append(node)
+        self.executor.add_node(node)
+        return node
+
+    def node(self, name: str) -> Any:
+        """A new node called ``name``, spun with the others."""
+        return self.add(self._transport.create_node(name))
+
+    def start(self) -> None:
+        """Start spinning (nodes may still be added)."""
+
+        def spin() -> None:
+            while not self._stop.is_set():
+                self.executor.spin_once(timeout_sec=0.05)
+
+        self._thread = threading.Thread(target=spin, daemon=True)
+        self._thread.start()
+
+    def close(self) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=10)
+        for node in self.nodes:
+            node.destroy_node()
+
+
+@pytest.fixture
+def nodes(ros: None) -> Iterator[Spinning]:
+    """In-process nodes on the test's private domain, spun by one thread (:class:`Spinning`)."""
+    del ros
+    spinning = Spinning()
+    try:
+        yield spinning
+    finally:
+        spinning.close()

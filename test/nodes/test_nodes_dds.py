@@ -16,7 +16,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from collections.abc import Iterator
 import itertools
 import math
@@ -42,16 +41,6 @@ REPO = Path(__file__).resolve().parents[2]
 STARTUP_TIMEOUT_S = 60.0
 S = 1_000_000_000
 CAMERA_OFFSET = (0.5, 0.0, 0.2)
-
-
-def wait_for(condition: Callable[[], bool], timeout_s: float = STARTUP_TIMEOUT_S) -> bool:
-    """Bounded wait for something that arrives from another process (not a timing assertion)."""
-    deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline:
-        if condition():
-            return True
-        time.sleep(0.05)
-    return condition()
 
 
 @pytest.fixture

@@ -12,25 +12,33 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""robot_state_publisher and joint_state_publisher over real DDS: FK via tf, throttle, params."""
+"""robot_state_publisher over real DDS (also fed by joint_state_publisher): FK, throttle, QoS."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from collections.abc import Iterator
 import math
 from pathlib import Path
-import queue
 import random
-import threading
 import time
 from typing import Any
 
+from conftest import Processes
 from conftest import ProcessOutput
+from conftest import Spinning
 from hypothesis import given
 from hypothesis import HealthCheck
 from hypothesis import settings
 import pytest
+from rsp_world import add_rsp
+from rsp_world import feed
+from rsp_world import joint_state
+from rsp_world import refused_in_one_line
+from rsp_world import rsp_process
+from rsp_world import SAMPLES
+from rsp_world import SECOND
+from rsp_world import start_connected
+from rsp_world import urdf_file
+from rsp_world import wait_until
 from tf_demo.core.math3d import matrix_from_quat
 from tf_demo.testing.urdf_strategies import GeneratedRobot
 from tf_demo.testing.urdf_strategies import pinocchio_link_poses
@@ -38,89 +46,6 @@ from tf_demo.testing.urdf_strategies import robots
 from tf_demo.urdf import RobotModel
 
 pytestmark = [pytest.mark.dds, pytest.mark.timeout(180)]
-
-SAMPLES = Path(__file__).resolve().parents[2] / 'urdf'
-SECOND = 1_000_000_000
-
-
-def wait_until(condition: Callable[[], bool], timeout: float = 10.0, what: str = '') -> None:
-    deadline = time.monotonic() + timeout
-    while not condition():
-        if time.monotonic() > deadline:
-            pytest.fail(f'timed out waiting for {what}')
-        time.sleep(0.01)
-
-
-class World:
-    """In-process nodes on the test's DDS domain, spun by one executor thread."""
-
-    def __init__(self) -> None:
-        from tf_demo import transport
-
-        self.transport = transport
-        transport.init(['test_rsp_dds'])
-        self.nodes: list[Any] = []
-        self.executor = transport.SingleThreadedExecutor()
-        self._stop = threading.Event()
-        self._thread: threading.Thread | None = None
-
-    def add(self, node: Any) -> Any:
-        self.nodes.append(node)
-        self.executor.add_node(node)
-        return node
-
-    def node(self, name: str) -> Any:
-        return self.add(self.transport.create_node(name))
-
-    def rsp(self, xml: str, *, reliable_input: bool = True, **parameters: Any) -> Any:
-        from tf_demo.nodes.robot_state_publisher import RobotStatePublisher
-        from tf_demo.transport.parameters import Parameter
-
-        # reliable joint_states (upstream's qos_overrides) so a busy machine cannot drop input
-        reliable = {
-            'qos_overrides./joint_states.subscription.reliability': 'reliable',
-            'qos_overrides./joint_states.subscription.depth': 100,
-        }
-        if not reliable_input:
-            reliable = {}
-        overrides = [Parameter('robot_description', value=xml)]
-        overrides += [Parameter(k, value=v) for k, v in {**reliable, **parameters}.items()]
-        return self.add(RobotStatePublisher((), parameter_overrides=overrides))
-
-    def start(self) -> None:
-        def spin() -> None:
-            while not self._stop.is_set():
-                self.executor.spin_once(timeout_sec=0.05)
-
-        self._thread = threading.Thread(target=spin, daemon=True)
-        self._thread.start()
-
-    def close(self) -> None:
-        self._stop.set()
-        if self._thread is not None:
-            self._thread.join(timeout=10)
-        for node in self.nodes:
-            node.destroy_node()
-        self.transport.shutdown()
-
-
-@pytest.fixture
-def world(world_env: dict[str, str]) -> Iterator[World]:
-    created = World()
-    try:
-        yield created
-    finally:
-        created.close()
-
-
-def joint_state(names: list[str], positions: list[float], stamp_ns: int) -> Any:
-    from tf_demo.transport.messages import sensor_msgs
-
-    message = sensor_msgs.JointState()
-    message.header.stamp.sec, message.header.stamp.nanosec = divmod(stamp_ns, SECOND)
-    message.name = names
-    message.position = positions
-    return message
 
 
 def assert_buffer_matches_pinocchio(
@@ -151,7 +76,7 @@ def assert_buffer_matches_pinocchio(
 
 
 @pytest.mark.differential
-def test_published_tf_of_sample_and_generated_robots_matches_pinocchio(world: World) -> None:
+def test_published_tf_of_sample_and_generated_robots_matches_pinocchio(nodes: Spinning) -> None:
     """/tf + /tf_static from the node, read through tf_demo's Buffer, equal pinocchio's FK."""
     from tf_demo.ros import Buffer
     from tf_demo.ros import TransformListener
@@ -159,12 +84,12 @@ def test_published_tf_of_sample_and_generated_robots_matches_pinocchio(world: Wo
     from tf_demo.transport.parameters import Parameter
 
     first = RobotModel.from_file(SAMPLES / 'example_revolute.urdf')
-    rsp = world.rsp(first.xml)
-    client = world.node('fk_client')
+    rsp = add_rsp(nodes, first.xml)
+    client = nodes.node('fk_client')
     buffer = Buffer()
     TransformListener(buffer, client)
     publisher = client.create_publisher(sensor_msgs.JointState, 'joint_states', 10)
-    world.start()
+    nodes.start()
     wait_until(lambda: publisher.get_subscription_count() >= 1, what='rsp subscription')
     stamp_ns = 1000 * SECOND
     counter = iter(range(1_000_000))
@@ -206,21 +131,15 @@ def test_published_tf_of_sample_and_generated_robots_matches_pinocchio(world: Wo
     generated()
 
 
-def test_throttle_rate_table_over_dds(world: World) -> None:
+def test_throttle_rate_table_over_dds(nodes: Spinning) -> None:
     """Counts of /tf messages for rows of the spec's rate table (synthetic stamps, paced input)."""
-    from tf_demo.transport.messages import sensor_msgs
-    from tf_demo.transport.messages import tf2_msgs
     from tf_demo.transport.parameters import Parameter
 
     model = RobotModel.from_file(SAMPLES / 'example_revolute.urdf')
-    rsp = world.rsp(model.xml)
-    client = world.node('throttle_client')
-    received: queue.Queue[Any] = queue.Queue()
-    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.put, 1000)
-    publisher = client.create_publisher(sensor_msgs.JointState, 'joint_states', 10)
-    world.start()
-    wait_until(lambda: publisher.get_subscription_count() >= 1, what='rsp subscription')
-    wait_until(lambda: client.count_publishers('/tf') >= 1, what='rsp /tf publisher')
+    rsp = add_rsp(nodes, model.xml)
+    client = feed(nodes, 'throttle_client', tf_depth=1000)
+    start_connected(nodes, client)
+    counted = 0
     rows = [
         # (input Hz, publish_frequency, ignore_timestamp, zero stamps, seconds, expected count)
         (100, 20.0, False, False, 2, 40),
@@ -241,18 +160,16 @@ def test_throttle_rate_table_over_dds(world: World) -> None:
         base_ns += 1000 * SECOND
         for k in range(hz * seconds):
             stamp_ns = 0 if zero else base_ns + k * SECOND // hz
-            publisher.publish(joint_state(['frame_1_to_frame_2'], [0.1 * k], stamp_ns))
+            client.joint_states.publish(joint_state(['frame_1_to_frame_2'], [0.1 * k], stamp_ns))
             time.sleep(0.003)
         time.sleep(0.5)
-        count = 0
-        while not received.empty():
-            message = received.get()
-            assert len(message.transforms) == 1
-            count += 1
-        assert count == expected, (hz, frequency, ignore, zero)
+        received = client.tf[counted:]
+        counted += len(received)
+        assert all(len(message.transforms) == 1 for message in received)
+        assert len(received) == expected, (hz, frequency, ignore, zero)
 
 
-def test_runtime_parameter_changes_are_validated_and_reload_the_model(world: World) -> None:
+def test_runtime_parameter_changes_are_validated_and_reload_the_model(nodes: Spinning) -> None:
     """Bad values are refused with upstream's reasons; a good description reloads and latches."""
     from tf_demo.transport.messages import std_msgs
     from tf_demo.transport.messages import tf2_msgs
@@ -262,8 +179,8 @@ def test_runtime_parameter_changes_are_validated_and_reload_the_model(world: Wor
     from tf_demo.transport.qos import ReliabilityPolicy
 
     old = RobotModel.from_file(SAMPLES / 'example_fixed.urdf')
-    rsp = world.rsp(old.xml)
-    world.start()
+    rsp = add_rsp(nodes, old.xml)
+    nodes.start()
 
     def refused(name: str, value: Any) -> str:
         [result] = rsp.set_parameters([Parameter(name, value=value)])
@@ -284,7 +201,7 @@ def test_runtime_parameter_changes_are_validated_and_reload_the_model(world: Wor
     [result] = rsp.set_parameters([Parameter('robot_description', value=new.xml)])
     assert result.successful
 
-    late = world.node('late_subscriber')
+    late = nodes.node('late_subscriber')
     latched = QoSProfile(
         depth=1,
         durability=DurabilityPolicy.TRANSIENT_LOCAL,
@@ -305,16 +222,7 @@ def test_runtime_parameter_changes_are_validated_and_reload_the_model(world: Wor
     assert children == {'frame_1', 'base_link', 'lidar_link', 'camera_link'}
 
 
-class Running(ProcessOutput):
-    """A spawned executable whose output lines are collected in the background."""
-
-    def wait_for(self, text: str, timeout: float = 20.0) -> None:
-        wait_until(
-            lambda: any(text in line for line in self.lines), timeout, f'{text!r} in {self.lines}'
-        )
-
-
-def test_jsp_and_rsp_processes_feed_a_late_listener(spawn: Any, world: World) -> None:
+def test_jsp_and_rsp_processes_feed_a_late_listener(spawn: Processes, nodes: Spinning) -> None:
     """joint_state_publisher + robot_state_publisher processes; a listener started later gets
     the latched fixed joints and the moving ones at the published joint positions."""
     from tf_demo.ros import Buffer
@@ -323,17 +231,8 @@ def test_jsp_and_rsp_processes_feed_a_late_listener(spawn: Any, world: World) ->
     from tf_demo.transport.messages import tf2_msgs
 
     xacro = SAMPLES / 'mobile_robot.urdf.xacro'
-    rsp = Running(
-        spawn.start(
-            'robot_state_publisher',
-            '--ros-args',
-            '-p',
-            f'urdf_file:={xacro}',
-            '-p',
-            'xacro_args:=prefix:=r1_',
-        )
-    )
-    jsp = Running(
+    rsp = rsp_process(spawn, *urdf_file(xacro.name), '-p', 'xacro_args:=prefix:=r1_')
+    jsp = ProcessOutput(
         spawn.start(
             'joint_state_publisher',
             str(xacro),
@@ -348,10 +247,10 @@ def test_jsp_and_rsp_processes_feed_a_late_listener(spawn: Any, world: World) ->
             'zeros.r1_left_wheel_joint:=0.5',
         )
     )
-    rsp.wait_for('Robot initialized')
+    rsp.wait_for_line('Robot initialized', anywhere=True)
     time.sleep(1.0)  # the listener joins late
     model = RobotModel.from_file(xacro, {'prefix': 'r1_'})
-    client = world.node('late_listener')
+    client = nodes.node('late_listener')
     buffer = Buffer()
     TransformListener(buffer, client)
     states: dict[int, dict[str, float]] = {}
@@ -368,7 +267,7 @@ def test_jsp_and_rsp_processes_feed_a_late_listener(spawn: Any, world: World) ->
 
     client.create_subscription(sensor_msgs.JointState, 'joint_states', remember, 10)
     client.create_subscription(tf2_msgs.TFMessage, '/tf', remember_tf, 100)
-    world.start()
+    nodes.start()
     # the throttle drops some joint states (20 Hz in, publish_frequency 20): compare at a stamp
     # that made it to /tf, so the buffer answers with that sample and not an interpolation
     wait_until(lambda: len(tf_stamps & set(states)) >= 3, what='joint states and their /tf')
@@ -380,17 +279,17 @@ def test_jsp_and_rsp_processes_feed_a_late_listener(spawn: Any, world: World) ->
         assert process.poll() is None
 
 
-def test_broken_description_exits_with_one_line_and_code_1(spawn: Any, tmp_path: Path) -> None:
+def test_broken_description_exits_with_one_line_and_code_1(
+    spawn: Processes, tmp_path: Path
+) -> None:
     """A broken description at start: one-line error naming the problem, exit code 1."""
     bad = tmp_path / 'bad.urdf'
     bad.write_text('<robot name="r"><link name="a"/><joint name="j" type="ball"/></robot>')
-    process = spawn.start('robot_state_publisher', '--ros-args', '-p', f'urdf_file:={bad}')
-    _, stderr = process.communicate(timeout=60)
-    assert process.returncode == 1
-    lines = [line for line in stderr.splitlines() if line.strip()]
-    assert len(lines) == 1, stderr
-    assert 'Traceback' not in stderr
-    assert f"{bad}:1: joint 'j': Joint [j] has no known type [ball]" in lines[0]
+    line = refused_in_one_line(
+        spawn, 'robot_state_publisher', '--ros-args', '-p', f'urdf_file:={bad}'
+    )
+    assert 'Traceback' not in line
+    assert f"{bad}:1: joint 'j': Joint [j] has no known type [ball]" in line
     empty = spawn.start('robot_state_publisher')
     _, stderr = empty.communicate(timeout=60)
     assert empty.returncode == 1
@@ -398,8 +297,7 @@ def test_broken_description_exits_with_one_line_and_code_1(spawn: Any, tmp_path:
     frequency = spawn.start(
         'robot_state_publisher',
         '--ros-args',
-        '-p',
-        f'urdf_file:={SAMPLES / "example_fixed.urdf"}',
+        *urdf_file('example_fixed.urdf'),
         '-p',
         'publish_frequency:=0.0',
     )
@@ -408,91 +306,40 @@ def test_broken_description_exits_with_one_line_and_code_1(spawn: Any, tmp_path:
     assert 'publish_frequency must be between 0 (exclusive) and 1000' in stderr
 
 
-def test_invalid_joint_states_are_warned_about_and_dropped(spawn: Any, world: World) -> None:
+def test_invalid_joint_states_are_warned_about_and_dropped(
+    spawn: Processes, nodes: Spinning
+) -> None:
     """Length mismatches produce upstream's texts and no /tf; the node keeps running."""
-    from tf_demo.transport.messages import sensor_msgs
-    from tf_demo.transport.messages import tf2_msgs
-
-    rsp = Running(
-        spawn.start(
-            'robot_state_publisher',
-            '--ros-args',
-            '-p',
-            f'urdf_file:={SAMPLES / "example_revolute.urdf"}',
-        )
-    )
-    client = world.node('bad_states')
-    received: list[Any] = []
-    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 100)
-    publisher = client.create_publisher(sensor_msgs.JointState, 'joint_states', 10)
-    world.start()
-    wait_until(lambda: publisher.get_subscription_count() >= 1, what='rsp subscription')
-    wait_until(lambda: client.count_publishers('/tf') >= 1, what='rsp /tf publisher')
-    publisher.publish(joint_state(['frame_1_to_frame_2'], [], 2000 * SECOND))
-    publisher.publish(joint_state(['frame_1_to_frame_2'], [0.1, 0.2], 2001 * SECOND))
-    rsp.wait_for(
+    rsp = rsp_process(spawn, *urdf_file('example_revolute.urdf'))
+    client = feed(nodes, 'bad_states')
+    start_connected(nodes, client)
+    publish = client.joint_states.publish
+    received = client.tf
+    publish(joint_state(['frame_1_to_frame_2'], [], 2000 * SECOND))
+    publish(joint_state(['frame_1_to_frame_2'], [0.1, 0.2], 2001 * SECOND))
+    rsp.wait_for_line(
         'Robot state publisher ignored a JointState message about joint(s) "frame_1_to_frame_2"'
-        '(,...) whose position member was empty.'
+        '(,...) whose position member was empty.',
+        anywhere=True,
     )
-    rsp.wait_for('Robot state publisher ignored an invalid JointState message')
-    publisher.publish(joint_state(['frame_1_to_frame_2'], [0.3], 2002 * SECOND))
+    rsp.wait_for_line('Robot state publisher ignored an invalid JointState message', anywhere=True)
+    publish(joint_state(['frame_1_to_frame_2'], [0.3], 2002 * SECOND))
     wait_until(lambda: len(received) == 1, what='the valid message on /tf')
     [transform] = received[0].transforms
     assert (transform.header.stamp.sec, transform.child_frame_id) == (2002, 'frame_2')
     # names that are no moving joint are ignored silently, but the message is still answered
-    publisher.publish(joint_state(['nobody', 'world_to_frame_1'], [1.0, 2.0], 2003 * SECOND))
+    publish(joint_state(['nobody', 'world_to_frame_1'], [1.0, 2.0], 2003 * SECOND))
     wait_until(lambda: len(received) == 2, what='the empty /tf message')
     assert list(received[1].transforms) == []
     assert rsp.process.poll() is None
 
 
-def test_jsp_takes_the_description_from_the_topic_and_merges_sources(
-    spawn: Any, world: World
-) -> None:
-    """Without a file, joint_state_publisher waits for the latched robot_description (published
-    by robot_state_publisher), publishes defaults, and republishes values from source_list."""
-    from tf_demo.transport.messages import sensor_msgs
-
-    jsp = Running(
-        spawn.start(
-            'joint_state_publisher',
-            '--ros-args',
-            '-p',
-            'rate:=20',
-            '-p',
-            'source_list:=[ext_states]',
-        )
-    )
-    jsp.wait_for('Waiting for robot_description to be published on the robot_description topic')
-    rsp = Running(
-        spawn.start(
-            'robot_state_publisher',
-            '--ros-args',
-            '-p',
-            f'urdf_file:={SAMPLES / "example_revolute.urdf"}',
-        )
-    )
-    client = world.node('jsp_client')
-    states: list[Any] = []
-    client.create_subscription(sensor_msgs.JointState, 'joint_states', states.append, 10)
-    source = client.create_publisher(sensor_msgs.JointState, 'ext_states', 10)
-    world.start()
-    wait_until(lambda: bool(states), what='joint states after the description arrived')
-    assert list(states[-1].name) == ['frame_1_to_frame_2']
-    assert list(states[-1].position) == [0.0]
-    wait_until(lambda: source.get_subscription_count() >= 1, what='source_list subscription')
-    source.publish(joint_state(['frame_1_to_frame_2', 'unknown'], [1.25, 9.0], 0))
-    wait_until(lambda: list(states[-1].position) == [1.25], what='the source value republished')
-    assert list(states[-1].name) == ['frame_1_to_frame_2']
-    assert rsp.process.poll() is None
-
-
-def test_positional_urdf_file_fallback_of_upstream(spawn: Any) -> None:
+def test_positional_urdf_file_fallback_of_upstream(spawn: Processes) -> None:
     """A non-ROS argument is taken as the URDF file (with upstream's warning); a missing one
     is a one-line error naming it."""
-    ok = Running(spawn.start('robot_state_publisher', str(SAMPLES / 'example_fixed.urdf')))
-    ok.wait_for('Assuming argument is name of URDF file.')
-    ok.wait_for('Robot initialized')
+    ok = ProcessOutput(spawn.start('robot_state_publisher', str(SAMPLES / 'example_fixed.urdf')))
+    ok.wait_for_line('Assuming argument is name of URDF file.', anywhere=True)
+    ok.wait_for_line('Robot initialized', anywhere=True)
     missing = spawn.start('robot_state_publisher', 'no_such.urdf')
     _, stderr = missing.communicate(timeout=60)
     assert missing.returncode == 1
@@ -500,24 +347,19 @@ def test_positional_urdf_file_fallback_of_upstream(spawn: Any) -> None:
     assert 'Traceback' not in stderr
 
 
-def test_backward_sim_time_jump_resets_the_throttle(world: World, capfd: Any) -> None:
+def test_backward_sim_time_jump_resets_the_throttle(nodes: Spinning, capfd: Any) -> None:
     """With use_sim_time, /clock going backwards warns and lets a throttled stamp through."""
     from tf_demo.transport.messages import rosgraph_msgs
-    from tf_demo.transport.messages import sensor_msgs
-    from tf_demo.transport.messages import tf2_msgs
     from tf_demo.transport.qos import QoSProfile
 
     model = RobotModel.from_file(SAMPLES / 'example_revolute.urdf')
-    rsp = world.rsp(model.xml, use_sim_time=True)
-    client = world.node('sim_clock')
-    clock = client.create_publisher(rosgraph_msgs.Clock, '/clock', QoSProfile(depth=10))
-    received: list[Any] = []
-    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 100)
-    publisher = client.create_publisher(sensor_msgs.JointState, 'joint_states', 10)
-    world.start()
-    wait_until(lambda: publisher.get_subscription_count() >= 1, what='rsp subscription')
+    rsp = add_rsp(nodes, model.xml, use_sim_time=True)
+    client = feed(nodes, 'sim_clock')
+    clock = client.node.create_publisher(rosgraph_msgs.Clock, '/clock', QoSProfile(depth=10))
+    start_connected(nodes, client)
     wait_until(lambda: clock.get_subscription_count() >= 1, what='rsp /clock subscription')
-    wait_until(lambda: client.count_publishers('/tf') >= 1, what='rsp /tf publisher')
+    publisher = client.joint_states
+    received = client.tf
 
     def set_clock(seconds: int) -> None:
         message = rosgraph_msgs.Clock()
@@ -537,57 +379,15 @@ def test_backward_sim_time_jump_resets_the_throttle(world: World, capfd: Any) ->
     assert 'Moved backwards in time, re-publishing joint transforms!' in capfd.readouterr().err
 
 
-def test_jsp_ignores_an_invalid_description_from_the_topic(world: World) -> None:
-    """A broken description on robot_description is reported; the node keeps running and takes
-    the next valid one."""
-    from tf_demo.nodes.joint_state_publisher import JointStatePublisher
-    from tf_demo.transport.messages import message_module
-    from tf_demo.transport.messages import sensor_msgs
-    from tf_demo.transport.messages import std_msgs
-    from tf_demo.transport.qos import DurabilityPolicy
-    from tf_demo.transport.qos import QoSProfile
-
-    world.add(JointStatePublisher(None))
-    client = world.node('description_source')
-    description = client.create_publisher(
-        std_msgs.String,
-        'robot_description',
-        QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL),
-    )
-    states: list[Any] = []
-    client.create_subscription(sensor_msgs.JointState, 'joint_states', states.append, 10)
-    # The warning as every node reports it, on /rosout (reading captured stderr while the
-    # node's thread writes to it could lose the line).
-    logged: list[str] = []
-    client.create_subscription(
-        message_module('rcl_interfaces').Log,
-        '/rosout',
-        lambda record: logged.append(record.msg),
-        QoSProfile(depth=1000, durability=DurabilityPolicy.TRANSIENT_LOCAL),
-    )
-    world.start()
-    wait_until(lambda: description.get_subscription_count() >= 1, what='jsp subscription')
-    description.publish(std_msgs.String(data='<robot name="r"><link name="a"></robot>'))
-
-    def warned() -> bool:
-        return any('Invalid robot_description given, ignoring' in text for text in logged)
-
-    wait_until(warned, timeout=30.0, what='the warning')
-    time.sleep(0.3)
-    assert states == []
-    xml = RobotModel.from_file(SAMPLES / 'mobile_robot.urdf.xacro').xml
-    description.publish(std_msgs.String(data=xml))
-    wait_until(lambda: bool(states), what='joint states of the valid description')
-    assert list(states[-1].name) == ['left_wheel_joint', 'right_wheel_joint']
-
-
-def test_topics_and_qos_are_upstreams(world: World) -> None:
+def test_topics_and_qos_are_upstreams(nodes: Spinning) -> None:
     """joint_states: sensor data QoS; /tf: reliable volatile 100; /tf_static and
     robot_description: reliable transient local 1."""
     from tf_demo.transport.qos import DurabilityPolicy
     from tf_demo.transport.qos import ReliabilityPolicy
 
-    rsp = world.rsp(RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml, reliable_input=False)
+    rsp = add_rsp(
+        nodes, RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml, reliable_input=False
+    )
     [joint_states] = [s for s in rsp.subscriptions if s.topic_name == '/joint_states']
     qos = joint_states.qos_profile
     assert (qos.reliability, qos.durability, qos.depth) == (
@@ -609,12 +409,13 @@ def test_topics_and_qos_are_upstreams(world: World) -> None:
     assert rsp.get_parameter('frame_prefix').value == ''
 
 
-def test_qos_overrides_parameters_change_the_profiles(world: World) -> None:
+def test_qos_overrides_parameters_change_the_profiles(nodes: Spinning) -> None:
     """qos_overrides.<topic>.<entity>.<policy> parameters are declared and applied at start."""
     from tf_demo.transport.qos import DurabilityPolicy
     from tf_demo.transport.qos import HistoryPolicy
 
-    rsp = world.rsp(
+    rsp = add_rsp(
+        nodes,
         RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml,
         **{
             'qos_overrides./tf.publisher.depth': 7,
@@ -630,7 +431,8 @@ def test_qos_overrides_parameters_change_the_profiles(world: World) -> None:
     with pytest.raises(
         ValueError, match=r"invalid value 'sometimes' for parameter qos_overrides\./tf\.publisher"
     ):
-        world.rsp(
+        add_rsp(
+            nodes,
             RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml,
             **{'qos_overrides./tf.publisher.reliability': 'sometimes'},
         )

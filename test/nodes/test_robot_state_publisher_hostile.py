@@ -16,7 +16,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 import contextlib
 import math
 from pathlib import Path
@@ -24,98 +23,68 @@ import shutil
 import subprocess
 from typing import Any
 
+from conftest import Processes
+from conftest import ProcessOutput
+from conftest import Spinning
 import pytest
 from ros_world.jazzy import require_package
-from ros_world.jazzy import stop
-from test_robot_state_publisher_dds import joint_state
-from test_robot_state_publisher_dds import Running
-from test_robot_state_publisher_dds import SAMPLES
-from test_robot_state_publisher_dds import SECOND
-from test_robot_state_publisher_dds import wait_until
-from test_robot_state_publisher_dds import World
+from ros_world.jazzy import running
+from rsp_world import feed
+from rsp_world import joint_state
+from rsp_world import parameter_args
+from rsp_world import refused_in_one_line
+from rsp_world import reliable_joint_states
+from rsp_world import rsp_process
+from rsp_world import SAMPLES
+from rsp_world import SECOND
+from rsp_world import start_connected
+from rsp_world import urdf_file
+from rsp_world import wait_until
 from tf_demo.urdf import expand_xacro
 
 pytestmark = [pytest.mark.dds, pytest.mark.timeout(240)]
 
-RELIABLE_INPUT = (
-    '-p',
-    'qos_overrides./joint_states.subscription.reliability:=reliable',
-    '-p',
-    'qos_overrides./joint_states.subscription.depth:=200',
-)
+RELIABLE_INPUT = parameter_args(reliable_joint_states(200))
 NOT_FINITE = 'position inf is not a finite number'
 
 
-@pytest.fixture
-def nodes(world_env: dict[str, str]) -> Iterator[World]:
-    """In-process nodes on the test's domain (test_robot_state_publisher_dds's World)."""
-    del world_env
-    created = World()
-    try:
-        yield created
-    finally:
-        created.close()
-
-
-@contextlib.contextmanager
-def upstream_rsp(env: dict[str, str], *args: str) -> Iterator[Running]:
+def upstream_rsp(
+    env: dict[str, str], *args: str
+) -> contextlib.AbstractContextManager[ProcessOutput]:
     """The real robot_state_publisher (``ros2 run``), stopped with Ctrl-C at the end."""
-    process = subprocess.Popen(
-        ['ros2', 'run', 'robot_state_publisher', 'robot_state_publisher', '--ros-args', *args],
-        env=env,
-        stdin=subprocess.DEVNULL,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        start_new_session=True,
-    )
-    try:
-        yield Running(process)
-    finally:
-        with contextlib.suppress(subprocess.TimeoutExpired):
-            stop(process)
+    command = ['ros2', 'run', 'robot_state_publisher', 'robot_state_publisher', '--ros-args']
+    return running([*command, *args], env)
 
 
-def reliable_publisher(client: Any, topic: str) -> Any:
-    from tf_demo.transport.messages import sensor_msgs
+def reliable_qos() -> Any:
+    """The QoS of a joint_states publisher matching :data:`RELIABLE_INPUT`."""
     from tf_demo.transport.qos import QoSProfile
     from tf_demo.transport.qos import ReliabilityPolicy
 
-    qos = QoSProfile(depth=200, reliability=ReliabilityPolicy.RELIABLE)
-    return client.create_publisher(sensor_msgs.JointState, topic, qos)
+    return QoSProfile(depth=200, reliability=ReliabilityPolicy.RELIABLE)
 
 
 def test_non_finite_and_mismatched_joint_states_are_dropped_and_publishing_goes_on(
-    spawn: Any, nodes: World
+    spawn: Processes, nodes: Spinning
 ) -> None:
     """inf/nan positions and a velocity of the wrong length: warned (throttled), dropped."""
-    from tf_demo.transport.messages import tf2_msgs
-
-    rsp = Running(
-        spawn.start(
-            'robot_state_publisher',
-            '--ros-args',
-            '-p',
-            f'urdf_file:={SAMPLES / "example_revolute.urdf"}',
-            *RELIABLE_INPUT,
-        )
-    )
-    client = nodes.node('hostile_states')
-    received: list[Any] = []
-    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 100)
-    publisher = reliable_publisher(client, 'joint_states')
-    nodes.start()
-    wait_until(lambda: publisher.get_subscription_count() >= 1, what='rsp subscription')
-    wait_until(lambda: client.count_publishers('/tf') >= 1, what='rsp /tf publisher')
+    rsp = rsp_process(spawn, *urdf_file('example_revolute.urdf'), *RELIABLE_INPUT)
+    client = feed(nodes, 'hostile_states', joint_states_qos=reliable_qos())
+    start_connected(nodes, client)
+    publisher = client.joint_states
+    received = client.tf
     joint = 'frame_1_to_frame_2'
     publisher.publish(joint_state([joint], [math.inf], 2000 * SECOND))
-    rsp.wait_for(
-        f"Robot state publisher ignored a JointState message: joint '{joint}': {NOT_FINITE}"
+    rsp.wait_for_line(
+        f"Robot state publisher ignored a JointState message: joint '{joint}': {NOT_FINITE}",
+        anywhere=True,
     )
     wrong_velocity = joint_state([joint], [0.1], 2001 * SECOND)
     wrong_velocity.velocity = [0.0, 1.0]
     publisher.publish(wrong_velocity)
-    rsp.wait_for('ignored a JointState message with 1 names but 2 velocity values')
+    rsp.wait_for_line(
+        'ignored a JointState message with 1 names but 2 velocity values', anywhere=True
+    )
     for index in range(100):
         bad = math.nan if index % 2 else -math.inf
         publisher.publish(joint_state([joint], [bad], (2002 + index) * SECOND))
@@ -141,20 +110,16 @@ def test_non_finite_and_mismatched_joint_states_are_dropped_and_publishing_goes_
     ids=['robot_state_publisher', 'joint_state_publisher', 'static_tf_pub'],
 )
 def test_a_device_as_input_file_is_refused_with_one_line(
-    spawn: Any, command: tuple[str, ...]
+    spawn: Processes, command: tuple[str, ...]
 ) -> None:
     """/dev/zero is not read until memory runs out: exit code 1 and one line naming it."""
-    process = spawn.start(*command)
-    _, stderr = process.communicate(timeout=120)
-    lines = [line for line in stderr.splitlines() if line.strip()]
-    assert process.returncode == 1, stderr
-    assert len(lines) == 1, stderr
-    assert '/dev/zero' in lines[0]
-    assert 'not a regular file' in lines[0]
+    line = refused_in_one_line(spawn, *command)
+    assert '/dev/zero' in line
+    assert 'not a regular file' in line
 
 
 def test_a_recursive_xacro_as_urdf_file_is_refused_with_one_line(
-    spawn: Any, tmp_path: Path
+    spawn: Processes, tmp_path: Path
 ) -> None:
     """A macro that calls itself: one line naming the file and the macro, no RecursionError."""
     path = tmp_path / 'again.urdf.xacro'
@@ -163,24 +128,22 @@ def test_a_recursive_xacro_as_urdf_file_is_refused_with_one_line(
         '<xacro:macro name="again"><xacro:again/></xacro:macro><xacro:again/></robot>',
         encoding='utf-8',
     )
-    process = spawn.start('robot_state_publisher', '--ros-args', '-p', f'urdf_file:={path}')
-    _, stderr = process.communicate(timeout=120)
-    lines = [line for line in stderr.splitlines() if line.strip()]
-    assert process.returncode == 1, stderr
-    assert len(lines) == 1, stderr
-    assert f'{path}: xacro: xacro failed: macros nested deeper than' in lines[0]
-    assert '(again -> again' in lines[0]
+    line = refused_in_one_line(
+        spawn, 'robot_state_publisher', '--ros-args', '-p', f'urdf_file:={path}'
+    )
+    assert f'{path}: xacro: xacro failed: macros nested deeper than' in line
+    assert '(again -> again' in line
 
 
 def test_the_course_command_runs_on_the_sample_robot(
-    spawn: Any, world_env: dict[str, str]
+    spawn: Processes, world_env: dict[str, str]
 ) -> None:
     """-p robot_description:="$(xacro urdf/mobile_robot.urdf.xacro)" starts the node (and, in
     the ROS world, the real robot_state_publisher on the real xacro's output)."""
     sample = SAMPLES / 'mobile_robot.urdf.xacro'
     description = f'robot_description:={expand_xacro(sample)}'
-    ours = Running(spawn.start('robot_state_publisher', '--ros-args', '-p', description))
-    ours.wait_for('Robot initialized', timeout=60)
+    ours = rsp_process(spawn, '-p', description)
+    ours.wait_for_line('Robot initialized', timeout=60, anywhere=True)
     assert ours.process.poll() is None
     xacro = shutil.which('xacro')
     if shutil.which('ros2') is None or xacro is None:
@@ -191,7 +154,7 @@ def test_the_course_command_runs_on_the_sample_robot(
     ).stdout
     arguments = ('-r', '__ns:=/upstream', '-p', f'robot_description:={text}')
     with upstream_rsp(world_env, *arguments) as theirs:
-        theirs.wait_for('Robot initialized', timeout=60)
+        theirs.wait_for_line('Robot initialized', timeout=60, anywhere=True)
         assert theirs.process.poll() is None
 
 
@@ -203,38 +166,34 @@ GHOST_MIMIC = (
 
 
 def test_a_mimic_of_a_missing_joint_loads_and_publishes_as_upstream(
-    spawn: Any, nodes: World, world_env: dict[str, str]
+    spawn: Processes, nodes: Spinning, world_env: dict[str, str]
 ) -> None:
     """The robot loads with one warning naming the joint; j is published as an ordinary joint
     (in the ROS world, the real robot_state_publisher publishes the same transform)."""
-    from tf_demo.transport.messages import tf2_msgs
+    from tf_demo.transport.messages import sensor_msgs
 
-    ours = Running(
-        spawn.start(
-            'robot_state_publisher',
-            '--ros-args',
-            '-p',
-            f'robot_description:={GHOST_MIMIC}',
-            *RELIABLE_INPUT,
-        )
-    )
+    ours = rsp_process(spawn, '-p', f'robot_description:={GHOST_MIMIC}', *RELIABLE_INPUT)
     upstream_wanted = shutil.which('ros2') is not None
     if upstream_wanted:
         require_package(world_env, 'robot_state_publisher')
-    client = nodes.node('ghost_mimic')
-    received: list[Any] = []
-    client.create_subscription(tf2_msgs.TFMessage, '/tf', received.append, 100)
-    publishers = [reliable_publisher(client, 'joint_states')]
+    client = feed(nodes, 'ghost_mimic', joint_states_qos=reliable_qos())
+    received = client.tf
+    publishers = [client.joint_states]
     arguments = (
         '-r', '__ns:=/upstream', '-p', 'frame_prefix:=upstream/',
         '-p', f'robot_description:={GHOST_MIMIC}', *RELIABLE_INPUT,
     )  # fmt: skip
     if upstream_wanted:
-        publishers.append(reliable_publisher(client, '/upstream/joint_states'))
+        upstream_topic = '/upstream/joint_states'
+        publishers.append(
+            client.node.create_publisher(sensor_msgs.JointState, upstream_topic, reliable_qos())
+        )
     nodes.start()
     context = upstream_rsp(world_env, *arguments) if upstream_wanted else contextlib.nullcontext()
     with context as theirs:
-        ours.wait_for("joint 'j' mimics joint 'ghost', which does not exist", timeout=60)
+        ours.wait_for_line(
+            "joint 'j' mimics joint 'ghost', which does not exist", timeout=60, anywhere=True
+        )
         for publisher in publishers:
             wait_until(
                 lambda publisher=publisher: publisher.get_subscription_count() >= 1,

@@ -24,14 +24,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 import math
 from pathlib import Path
-import subprocess
 import time
 from typing import Any
 
-from jazzy import eventually
+from conftest import eventually
+from conftest import REPO_ROOT
+from conftest import run_captured
 from jazzy import graph_lists
-from jazzy import REPO_ROOT
-from jazzy import require_installed_tf_demo
 from jazzy import ros2
 from jazzy import standalone_command
 from jazzy import standalone_env
@@ -42,13 +41,6 @@ import pytest
 pytestmark = [pytest.mark.rclpy_world, pytest.mark.timeout(180)]
 
 URDF = REPO_ROOT / 'urdf'
-
-
-@pytest.fixture
-def jazzy_env(world_env: dict[str, str]) -> dict[str, str]:
-    """The test's private domain, with tf_demo installed in the sourced workspace."""
-    require_installed_tf_demo(world_env)
-    return world_env
 
 
 class RealTf2Listener:
@@ -75,6 +67,19 @@ class RealTf2Listener:
         if not eventually(ready, timeout, 0.1):
             return None
         return self.buffer.lookup_transform(target, source, Time())
+
+    def translation_from(
+        self,
+        command: list[str],
+        env: dict[str, str],
+        target: str,
+        source: str,
+        cwd: Path | None = None,
+    ) -> tuple[float, float, float] | None:
+        """While ``command`` runs: the translation of target <- source (None if none came)."""
+        with started(command, env, cwd):
+            transform = self.lookup(target, source)
+        return None if transform is None else translation(transform)
 
     def close(self) -> None:
         # Stop tf2_ros's spin thread before the context goes, or it raises in its thread.
@@ -189,33 +194,32 @@ def test_ros2_run_tf_loader_republishes_a_snapshot(
     """``ros2 run tf_demo tf_saver`` then ``tf_loader``: a real tf2_ros listener sees the tree."""
     publisher = ['ros2', 'run', 'tf_demo', 'static_tf_pub', '--ros-args', '-p', 'parent_frame:=s0']
     with started(publisher, jazzy_env):
-        saved = subprocess.run(
-            ['ros2', 'run', 'tf_demo', 'tf_saver', '-t', '3', '-o', 'tree.yaml'],
-            env=jazzy_env,
-            cwd=tmp_path,
-            capture_output=True,
-            text=True,
-            timeout=60,
-            check=False,
-        )
+        saver = ['ros2', 'run', 'tf_demo', 'tf_saver', '-t', '3', '-o', 'tree.yaml']
+        saved = run_captured(saver, jazzy_env, cwd=tmp_path)
     assert saved.returncode == 0, saved.stderr
-    with started(['ros2', 'run', 'tf_demo', 'tf_loader', 'tree.yaml'], jazzy_env, cwd=tmp_path):
-        transform = real_tf2.lookup('s0', 'camera_link')
-    assert transform is not None
-    assert translation(transform) == pytest.approx((0.5, 0.0, 0.2))
+    loader = ['ros2', 'run', 'tf_demo', 'tf_loader', 'tree.yaml']
+    loaded = real_tf2.translation_from(loader, jazzy_env, 's0', 'camera_link', cwd=tmp_path)
+    assert loaded == pytest.approx((0.5, 0.0, 0.2))
 
 
 # -- real tf2_ros on the other end ---------------------------------------------------------------
 
 
-def test_real_tf2_ros_listener_receives_static_tf_pub(
-    jazzy_env: dict[str, str], real_tf2: RealTf2Listener
+@pytest.mark.parametrize(
+    ('executable', 'expected'),
+    [('static_tf_pub', (0.5, 0.0, 0.2)), ('frame_broadcaster', (0.1, 0.2, 0.3))],
+)
+def test_real_tf2_ros_listener_receives_base_link_to_camera_link(
+    jazzy_env: dict[str, str],
+    real_tf2: RealTf2Listener,
+    executable: str,
+    expected: tuple[float, float, float],
 ) -> None:
-    """static_tf_pub's latched base_link -> camera_link reaches a real tf2_ros listener."""
-    with started(['ros2', 'run', 'tf_demo', 'static_tf_pub'], jazzy_env):
-        transform = real_tf2.lookup('base_link', 'camera_link')
-    assert transform is not None
-    assert translation(transform) == pytest.approx((0.5, 0.0, 0.2))
+    """static_tf_pub's latched (/tf_static) and frame_broadcaster's (/tf) base_link ->
+    camera_link reach a real tf2_ros listener."""
+    command = ['ros2', 'run', 'tf_demo', executable]
+    published = real_tf2.translation_from(command, jazzy_env, 'base_link', 'camera_link')
+    assert published == pytest.approx(expected)
 
 
 def test_real_tf2_ros_listener_follows_dynamic_tf_pub(
@@ -234,16 +238,6 @@ def test_real_tf2_ros_listener_follows_dynamic_tf_pub(
         assert math.hypot(x, y) == pytest.approx(2.0, abs=1e-6)
         assert z == 0.0
     assert translation(first) != translation(second)
-
-
-def test_real_tf2_ros_listener_receives_frame_broadcaster(
-    jazzy_env: dict[str, str], real_tf2: RealTf2Listener
-) -> None:
-    """frame_broadcaster's base_link -> camera_link (0.1, 0.2, 0.3) on /tf."""
-    with started(['ros2', 'run', 'tf_demo', 'frame_broadcaster'], jazzy_env):
-        transform = real_tf2.lookup('base_link', 'camera_link')
-    assert transform is not None
-    assert translation(transform) == pytest.approx((0.1, 0.2, 0.3))
 
 
 def test_real_tf2_ros_listener_receives_robot_state_publisher(
@@ -405,7 +399,5 @@ def test_standalone_and_rclpy_worlds_exchange_tf_both_ways(
             (echo_static, '- Translation: [0.500, 0.000, 0.200]'),
             (echo_dynamic, '- Translation: [0.100, 0.200, 0.300]'),
         ):
-            echoed = subprocess.run(
-                command, env=standalone, capture_output=True, text=True, timeout=60, check=False
-            )
+            echoed = run_captured(command, standalone)
             assert expected in echoed.stdout, (echoed.stdout, echoed.stderr)

@@ -47,10 +47,10 @@ import ast
 from collections.abc import Iterator
 import json
 import struct
-import subprocess
 import sys
 from typing import Any
 
+from conftest import run_captured
 from jazzy import require_package
 from jazzy import standalone_env
 from jazzy import standalone_python
@@ -355,14 +355,7 @@ def test_real_rclpy_receives_what_every_decoder_gives(
     plan_file.write_text(json.dumps(plan))
     command = [standalone_python(), '-c', PUBLISHER, str(plan_file)]
     with started(command, standalone_env(world_env)) as talker:
-        listener = subprocess.run(
-            [sys.executable, '-c', SUBSCRIBER],
-            env=world_env,
-            capture_output=True,
-            text=True,
-            timeout=180,
-            check=False,
-        )
+        listener = run_captured([sys.executable, '-c', SUBSCRIBER], world_env, timeout=180)
         assert talker.poll() is None, talker.stdout.read() if talker.stdout else ''
     assert listener.returncode == 0, (listener.stdout, listener.stderr)
     lines = listener.stdout.splitlines()

@@ -27,26 +27,31 @@ labels). Deliberate differences are ``xfail`` with the reason, and listed in the
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from collections.abc import Iterator
 from collections.abc import Sequence
 import contextlib
 import math
-import os
 from pathlib import Path
 import re
-import signal
 import subprocess
 import threading
 import time
 from typing import Any
+from typing import NamedTuple
 from xml.etree import ElementTree
 
 from conftest import _exclusive_domain
+from conftest import eventually
 from conftest import ProcessOutput
-from jazzy import eventually
-from jazzy import require_installed_tf_demo
+from jazzy import kill_group
+from jazzy import rclpy_node
+from jazzy import RclpyNode
 from jazzy import require_package
 from jazzy import ros2
+from jazzy import running
+from jazzy import start_session
+from jazzy import stop
 import pytest
 import yaml
 
@@ -83,44 +88,11 @@ def ours_run(executable: str, *args: str) -> list[str]:
     return ['ros2', 'run', 'tf_demo', executable, *args]
 
 
-def interrupt(process: subprocess.Popen[str], timeout: float = 20.0) -> int:
-    """
-    Ctrl-C as a terminal sends it: SIGINT to the whole process group, return the exit code.
-
-    ``ros2 run`` does not forward SIGINT to the program it started (it expects the terminal to
-    signal the group), so the group is signalled. Anything left is killed.
-    """
-    if process.poll() is None:
-        with contextlib.suppress(ProcessLookupError):
-            os.killpg(process.pid, signal.SIGINT)
-    try:
-        return process.wait(timeout=timeout)
-    finally:
-        kill_group(process)
-
-
-def kill_group(process: subprocess.Popen[str]) -> None:
-    """SIGKILL whatever is left of the process group of ``process`` (started as a session)."""
-    with contextlib.suppress(ProcessLookupError, PermissionError):
-        os.killpg(process.pid, signal.SIGKILL)
-    if process.poll() is None:
-        process.wait()
-
-
 def run_to_end(
     command: list[str], env: dict[str, str], cwd: Path | None = None
 ) -> subprocess.CompletedProcess[str]:
     """Run ``command`` in its own process group to its end (killed at the timeout)."""
-    process = subprocess.Popen(
-        command,
-        env=env,
-        cwd=cwd,
-        stdin=subprocess.DEVNULL,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        start_new_session=True,
-    )
+    process = start_session(command, env, cwd, stderr=subprocess.PIPE)
     try:
         out, err = process.communicate(timeout=RUN_TIMEOUT)
     finally:
@@ -128,33 +100,24 @@ def run_to_end(
     return subprocess.CompletedProcess(command, process.returncode, out, err)
 
 
-@contextlib.contextmanager
-def running(
-    command: list[str], env: dict[str, str], cwd: Path | None = None
-) -> Iterator[ProcessOutput]:
-    """A background process (own process group) with stdout and stderr lines collected."""
-    process = subprocess.Popen(
-        command,
-        env=env,
-        cwd=cwd,
-        stdin=subprocess.DEVNULL,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        start_new_session=True,
-    )
-    output = ProcessOutput(process)
-    try:
-        yield output
-    finally:
-        with contextlib.suppress(subprocess.TimeoutExpired):
-            interrupt(process)
-        kill_group(process)
+def deliberate(args: tuple[str, ...], case: str, reason: str) -> Any:
+    """A case where ours differs from upstream on purpose: a strict xfail saying why."""
+    why = f'{reason} (deliberate, see README)'
+    return pytest.param(args, id=case, marks=pytest.mark.xfail(reason=why, strict=True))
+
+
+def assert_refused_alike(upstream: list[str], ours: list[str], env: dict[str, str]) -> None:
+    """Both commands run to their end: the same exit code, stdout and stderr (normalized)."""
+    their_run = run_to_end(upstream, env)
+    our_run = run_to_end(ours, env)
+    assert normalized(our_run.stdout) == normalized(their_run.stdout)
+    assert normalized(our_run.stderr) == normalized(their_run.stderr)
+    assert our_run.returncode == their_run.returncode
 
 
 def finished(output: ProcessOutput) -> tuple[int, list[str], list[str]]:
     """Ctrl-C the process (if still running); return (exit code, stdout, stderr) normalized."""
-    code = interrupt(output.process)
+    code = stop(output.process)
     time.sleep(0.2)  # let the pump threads drain the pipes
     return code, normalized(output.stdout), normalized(output.stderr)
 
@@ -165,13 +128,6 @@ def require_executable(env: dict[str, str], package: str, executable: str) -> No
     listed = ros2(env, 'pkg', 'executables', package)
     if f'{package} {executable}' not in listed.stdout.splitlines():
         pytest.skip(f'{package} has no executable {executable} in this installation')
-
-
-@pytest.fixture
-def jazzy_env(world_env: dict[str, str]) -> dict[str, str]:
-    """The test's private domain, with tf_demo installed in the sourced workspace."""
-    require_installed_tf_demo(world_env)
-    return world_env
 
 
 @pytest.fixture
@@ -215,79 +171,20 @@ def qos_fields(info: Any) -> tuple[str, ...]:
     )
 
 
-class Capture:
-    """Every message received by one subscription, in arrival order."""
-
-    def __init__(self) -> None:
-        self._lock = threading.Lock()
-        self._messages: list[Any] = []
-
-    def __call__(self, message: Any) -> None:
-        with self._lock:
-            self._messages.append(message)
-
-    @property
-    def messages(self) -> list[Any]:
-        with self._lock:
-            return list(self._messages)
+def peer(env: dict[str, str], name: str) -> contextlib.AbstractContextManager[RclpyNode]:
+    """An rclpy node called ``name`` in this process, on the domain of ``env``."""
+    return rclpy_node(name, int(env['ROS_DOMAIN_ID']))
 
 
-class RclpyPeer:
-    """An rclpy node on ``domain_id`` in this process, spun by a thread of its own."""
+def capture(peer: RclpyNode, message_type: Any, topic: str, *, latched: bool) -> list[Any]:
+    """Subscribe (reliable; transient local when ``latched``); the list messages arrive in."""
+    from rclpy.qos import DurabilityPolicy
+    from rclpy.qos import QoSProfile
+    from rclpy.qos import ReliabilityPolicy
 
-    def __init__(self, name: str, domain_id: int) -> None:
-        import rclpy
-        from rclpy.executors import SingleThreadedExecutor
-
-        self._rclpy = rclpy
-        self.context = rclpy.Context()
-        rclpy.init(context=self.context, domain_id=domain_id)
-        self.node = rclpy.create_node(name, context=self.context)
-        self._executor = SingleThreadedExecutor(context=self.context)
-        self._executor.add_node(self.node)
-        self._thread = threading.Thread(target=self._spin, daemon=True)
-        self._thread.start()
-
-    def _spin(self) -> None:
-        from rclpy.executors import ExternalShutdownException
-
-        while self.context.ok():
-            try:
-                self._executor.spin_once(timeout_sec=0.1)
-            except (ExternalShutdownException, RuntimeError):
-                return
-
-    def capture(self, message_type: Any, topic: str, *, latched: bool) -> Capture:
-        """Subscribe (reliable; transient local when ``latched``) and collect the messages."""
-        from rclpy.qos import DurabilityPolicy
-        from rclpy.qos import QoSProfile
-        from rclpy.qos import ReliabilityPolicy
-
-        qos = QoSProfile(
-            depth=1000,
-            reliability=ReliabilityPolicy.RELIABLE,
-            durability=(
-                DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE
-            ),
-        )
-        capture = Capture()
-        self.node.create_subscription(message_type, topic, capture, qos)
-        return capture
-
-    def close(self) -> None:
-        self._executor.shutdown(timeout_sec=1.0)
-        self.node.destroy_node()
-        self._rclpy.shutdown(context=self.context)
-        self._thread.join(timeout=5)
-
-
-@contextlib.contextmanager
-def peer(name: str, domain_id: int) -> Iterator[RclpyPeer]:
-    node = RclpyPeer(name, domain_id)
-    try:
-        yield node
-    finally:
-        node.close()
+    durability = DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE
+    qos = QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE, durability=durability)
+    return peer.collect(message_type, topic, qos)
 
 
 def tf_message(*transforms: tuple[str, str, int, int, Sequence[float], Sequence[float]]) -> Any:
@@ -317,6 +214,7 @@ class RepeatingPublisher:
         from rclpy.qos import QoSProfile
         from tf2_msgs.msg import TFMessage
 
+        self.node = node
         self.message = message
         self._publisher = node.create_publisher(TFMessage, '/tf', QoSProfile(depth=100))
         self._stop = threading.Event()
@@ -332,7 +230,48 @@ class RepeatingPublisher:
         self._thread.join(timeout=5)
 
 
+def static_publisher(parent: str, child: str, *transform: str) -> list[str]:
+    """Upstream's ``static_transform_publisher`` of parent -> child (``transform``: its flags)."""
+    return upstream_run(
+        'tf2_ros', 'static_transform_publisher', *transform, '--frame-id', parent,
+        '--child-frame-id', child,
+    )  # fmt: skip
+
+
+@contextlib.contextmanager
+def tf_feed(
+    env: dict[str, str], name: str, message: Any, *statics: list[str]
+) -> Iterator[RepeatingPublisher]:
+    """The ``statics`` commands running, and ``message`` repeated on /tf by node ``name``."""
+    with contextlib.ExitStack() as stack:
+        feed = stack.enter_context(peer(env, name))
+        for command in statics:
+            stack.enter_context(running(command, env))
+        repeating = RepeatingPublisher(feed.node, message)
+        try:
+            yield repeating
+        finally:
+            repeating.close()
+
+
 # -- tf_echo against tf2_echo ---------------------------------------------------------------------
+
+
+@contextlib.contextmanager
+def both_echoes(env: dict[str, str], *args: str) -> Iterator[tuple[ProcessOutput, ProcessOutput]]:
+    """(theirs, ours): ``tf2_echo`` and ``tf_echo`` running side by side with ``args``."""
+    with (
+        running(upstream_run('tf2_ros', 'tf2_echo', *args), env) as theirs,
+        running(ours_run('tf_echo', *args), env) as ours,
+    ):
+        yield theirs, ours
+
+
+def until_each(condition: Callable[[ProcessOutput], object], *outputs: ProcessOutput) -> None:
+    """Wait (60 s at most) until ``condition`` holds for each of ``outputs``, else fail."""
+    for output in outputs:
+        assert eventually(lambda o=output: condition(o), 60.0), (output.stdout, output.stderr)
+
 
 ECHO_BLOCK_LINES = 11
 
@@ -369,46 +308,26 @@ ECHO_PAIRS = [('a', 'b'), ('b', 'a'), ('a', 'c'), ('c', 'a'), ('b', 'c')]
 
 @pytest.mark.parametrize(('source', 'target'), ECHO_PAIRS)
 def test_tf_echo_prints_the_same_blocks_as_tf2_echo(
-    tf2_ros_cpp: dict[str, str], world_env: dict[str, str], source: str, target: str
+    tf2_ros_cpp: dict[str, str], source: str, target: str
 ) -> None:
     """Both echo the same static and dynamic transforms: identical blocks, stamp line included."""
     env = tf2_ros_cpp
-    publisher = upstream_run(
-        'tf2_ros',
-        'static_transform_publisher',
-        *ECHO_STATIC_ARGS,
-        '--frame-id',
-        'a',
-        '--child-frame-id',
-        'b',
-    )
+    publisher = static_publisher('a', 'b', *ECHO_STATIC_ARGS)
     with (
-        peer('sbs_echo_feed', int(world_env['ROS_DOMAIN_ID'])) as feed,
-        running(publisher, env),
+        tf_feed(env, 'sbs_echo_feed', tf_message(ECHO_DYNAMIC), publisher),
+        both_echoes(env, source, target) as (theirs, ours),
     ):
-        dynamic = RepeatingPublisher(feed.node, tf_message(ECHO_DYNAMIC))
-        try:
-            with (
-                running(upstream_run('tf2_ros', 'tf2_echo', source, target), env) as theirs,
-                running(ours_run('tf_echo', source, target), env) as ours,
-            ):
-                for output in (theirs, ours):
-                    assert eventually(lambda o=output: len(echo_blocks(o.stdout)) >= 2, 60.0), (
-                        output.stdout,
-                        output.stderr,
-                    )
-                # stderr holds waiting lines while discovery runs: racy, see the waiting test
-                their_code, their_out, _ = finished(theirs)
-                our_code, our_out, _ = finished(ours)
-        finally:
-            dynamic.close()
+        until_each(lambda output: len(echo_blocks(output.stdout)) >= 2, theirs, ours)
+        # stderr holds waiting lines while discovery runs: racy, see the waiting test
+        their_code, their_out, _ = finished(theirs)
+        our_code, our_out, _ = finished(ours)
     assert echo_blocks(our_out)[0] == echo_blocks(their_out)[0]
     assert echo_blocks(our_out)[1] == echo_blocks(their_out)[1]
     assert our_code == their_code
 
 
 def test_tf_echo_with_a_rate_prints_the_same_blocks_as_tf2_echo(
-    tf2_ros_cpp: dict[str, str], world_env: dict[str, str]
+    tf2_ros_cpp: dict[str, str],
 ) -> None:
     """
     ``tf_echo a b 5`` and ``tf2_echo a b 5``: the same blocks; Ctrl-C ends both alike.
@@ -417,21 +336,10 @@ def test_tf_echo_with_a_rate_prints_the_same_blocks_as_tf2_echo(
     same QoS (tf2's listener QoS), so the graph shows two identical endpoints per topic.
     """
     env = tf2_ros_cpp
-    publisher = upstream_run(
-        'tf2_ros', 'static_transform_publisher', '--qx', '0.5', '--qw', '0.5', '--z', '-3',
-        '--frame-id', 'a', '--child-frame-id', 'b',
-    )  # fmt: skip
-    with (
-        running(publisher, env),
-        running(upstream_run('tf2_ros', 'tf2_echo', 'a', 'b', '5'), env) as theirs,
-        running(ours_run('tf_echo', 'a', 'b', '5'), env) as ours,
-    ):
-        for output in (theirs, ours):
-            assert eventually(lambda o=output: len(echo_blocks(o.stdout)) >= 3, 60.0), (
-                output.stdout,
-                output.stderr,
-            )
-        with peer('sbs_echo_probe', int(world_env['ROS_DOMAIN_ID'])) as probe:
+    publisher = static_publisher('a', 'b', '--qx', '0.5', '--qw', '0.5', '--z', '-3')
+    with running(publisher, env), both_echoes(env, 'a', 'b', '5') as (theirs, ours):
+        until_each(lambda output: len(echo_blocks(output.stdout)) >= 3, theirs, ours)
+        with peer(env, 'sbs_echo_probe') as probe:
 
             def listener_endpoints() -> dict[str, list[tuple[str, ...]]]:
                 return {
@@ -470,7 +378,7 @@ def test_tf_echo_puts_the_same_nodes_in_the_graph_as_tf2_echo(tf2_ros_cpp: dict[
         ('ours', ours_run('tf_echo', 'a', 'b')),
     ):
         with (
-            peer('sbs_echo_probe', int(tf2_ros_cpp['ROS_DOMAIN_ID'])) as probe,
+            peer(tf2_ros_cpp, 'sbs_echo_probe') as probe,
             running(command, tf2_ros_cpp),
         ):
 
@@ -489,39 +397,21 @@ def test_tf_echo_puts_the_same_nodes_in_the_graph_as_tf2_echo(tf2_ros_cpp: dict[
     assert nodes['ours'] == nodes['theirs']
 
 
-def test_tf_echo_waiting_for_missing_frames_logs_as_tf2_echo(
-    tf2_ros_cpp: dict[str, str], world_env: dict[str, str]
-) -> None:
+def test_tf_echo_waiting_for_missing_frames_logs_as_tf2_echo(tf2_ros_cpp: dict[str, str]) -> None:
     """Missing and unconnected frames: the same INFO texts while waiting, nothing on stdout."""
     env = tf2_ros_cpp
-    publisher = upstream_run(
-        'tf2_ros', 'static_transform_publisher', '--frame-id', 'a', '--child-frame-id', 'b'
-    )
+    other_tree = tf_message(('x', 'y', 1700000000, 0, (1, 0, 0), (0, 0, 0, 1)))
     runs = {}
-    with (
-        peer('sbs_echo_feed', int(world_env['ROS_DOMAIN_ID'])) as feed,
-        running(publisher, env),
-    ):
-        other_tree = RepeatingPublisher(
-            feed.node, tf_message(('x', 'y', 1700000000, 0, (1, 0, 0), (0, 0, 0, 1)))
-        )
-        try:
-            for source, target in (('a', 'zz'), ('a', 'y')):
-                with (
-                    running(upstream_run('tf2_ros', 'tf2_echo', source, target), env) as theirs,
-                    running(ours_run('tf_echo', source, target), env) as ours,
-                ):
-                    # Wait until both have logged while every frame but the missing one arrived.
-                    for output in (theirs, ours):
-                        assert eventually(
-                            lambda o=output: (
-                                len(o.stderr) >= 3 and 'Invalid frame ID "a"' not in o.stderr[-1]
-                            ),
-                            60.0,
-                        ), output.stderr
-                    runs[source, target] = (finished(theirs), finished(ours))
-        finally:
-            other_tree.close()
+    with tf_feed(env, 'sbs_echo_feed', other_tree, static_publisher('a', 'b')):
+        for source, target in (('a', 'zz'), ('a', 'y')):
+            with both_echoes(env, source, target) as (theirs, ours):
+                # Wait until both have logged while every frame but the missing one arrived.
+                until_each(
+                    lambda o: len(o.stderr) >= 3 and 'Invalid frame ID "a"' not in o.stderr[-1],
+                    theirs,
+                    ours,
+                )
+                runs[source, target] = (finished(theirs), finished(ours))
     for (their_code, their_out, their_err), (our_code, our_out, our_err) in runs.values():
         assert (our_code, our_out) == (their_code, their_out)
         assert our_err[-1] == their_err[-1]
@@ -530,36 +420,21 @@ def test_tf_echo_waiting_for_missing_frames_logs_as_tf2_echo(
         assert set(their_err[1:]) <= set(our_err), (our_err, their_err)
 
 
-def test_tf_echo_failure_block_matches_tf2_echo(
-    tf2_ros_cpp: dict[str, str], world_env: dict[str, str]
-) -> None:
+def test_tf_echo_failure_block_matches_tf2_echo(tf2_ros_cpp: dict[str, str]) -> None:
     """After c moves to another tree, both print the same failure block (time normalized)."""
     env = tf2_ros_cpp
-    publisher = upstream_run(
-        'tf2_ros', 'static_transform_publisher', '--frame-id', 'a', '--child-frame-id', 'b'
-    )
     with (
-        peer('sbs_echo_feed', int(world_env['ROS_DOMAIN_ID'])) as feed,
-        running(publisher, env),
+        tf_feed(
+            env, 'sbs_echo_feed', tf_message(ECHO_DYNAMIC), static_publisher('a', 'b')
+        ) as dynamic,
+        both_echoes(env, 'a', 'c') as (theirs, ours),
     ):
-        dynamic = RepeatingPublisher(feed.node, tf_message(ECHO_DYNAMIC))
-        try:
-            with (
-                running(upstream_run('tf2_ros', 'tf2_echo', 'a', 'c'), env) as theirs,
-                running(ours_run('tf_echo', 'a', 'c'), env) as ours,
-            ):
-                for output in (theirs, ours):
-                    assert eventually(lambda o=output: echo_blocks(o.stdout), 60.0), output.stdout
-                # c gets a newer parent x in another tree: lookups of a <- c now fail.
-                dynamic.message = tf_message(('x', 'c', 1700000001, 0, (0, 0, 1), (0, 0, 0, 1)))
-                for output in (theirs, ours):
-                    assert eventually(lambda o=output: failure_blocks(o.stdout), 60.0), (
-                        output.stdout
-                    )
-                _, their_out, _ = finished(theirs)
-                _, our_out, _ = finished(ours)
-        finally:
-            dynamic.close()
+        until_each(lambda output: echo_blocks(output.stdout), theirs, ours)
+        # c gets a newer parent x in another tree: lookups of a <- c now fail.
+        dynamic.message = tf_message(('x', 'c', 1700000001, 0, (0, 0, 1), (0, 0, 0, 1)))
+        until_each(lambda output: failure_blocks(output.stdout), theirs, ours)
+        _, their_out, _ = finished(theirs)
+        _, our_out, _ = finished(ours)
 
     def comparable(block: list[str]) -> tuple[str, str, list[str]]:
         time_line, exception, listing, *frames = block
@@ -569,6 +444,10 @@ def test_tf_echo_failure_block_matches_tf2_echo(
     assert comparable(failure_blocks(our_out)[0]) == comparable(failure_blocks(their_out)[0])
 
 
+ECHO_ABORTS = (
+    'tf2_echo aborts on an uncaught std::invalid_argument from rclcpp::Rate; '
+    'tf_echo exits 2 with a message'
+)
 ECHO_BAD_ARGS = [
     pytest.param((), id='no-arguments'),
     pytest.param(('a',), id='one-argument'),
@@ -576,24 +455,8 @@ ECHO_BAD_ARGS = [
     pytest.param(('a', 'b', 'foo'), id='rate-not-a-number'),
     pytest.param(('a', 'b', '1.0foo'), id='rate-with-trailing-junk'),
     pytest.param(('a', 'b', ''), id='rate-empty'),
-    pytest.param(
-        ('a', 'b', '0'),
-        id='rate-zero',
-        marks=pytest.mark.xfail(
-            reason='tf2_echo aborts on an uncaught std::invalid_argument from rclcpp::Rate; '
-            'tf_echo exits 2 with a message (deliberate, see README)',
-            strict=True,
-        ),
-    ),
-    pytest.param(
-        ('a', 'b', '-2'),
-        id='rate-negative',
-        marks=pytest.mark.xfail(
-            reason='tf2_echo aborts on an uncaught std::invalid_argument from rclcpp::Rate; '
-            'tf_echo exits 2 with a message (deliberate, see README)',
-            strict=True,
-        ),
-    ),
+    deliberate(('a', 'b', '0'), 'rate-zero', ECHO_ABORTS),
+    deliberate(('a', 'b', '-2'), 'rate-negative', ECHO_ABORTS),
 ]
 
 
@@ -602,11 +465,8 @@ def test_tf_echo_bad_arguments_exit_and_print_as_tf2_echo(
     tf2_ros_cpp: dict[str, str], args: tuple[str, ...]
 ) -> None:
     """Wrong argument counts and bad rates: same exit code, stdout and stderr."""
-    theirs = run_to_end(upstream_run('tf2_ros', 'tf2_echo', *args), tf2_ros_cpp)
-    ours = run_to_end(ours_run('tf_echo', *args), tf2_ros_cpp)
-    assert normalized(ours.stdout) == normalized(theirs.stdout)
-    assert normalized(ours.stderr) == normalized(theirs.stderr)
-    assert ours.returncode == theirs.returncode
+    upstream = upstream_run('tf2_ros', 'tf2_echo', *args)
+    assert_refused_alike(upstream, ours_run('tf_echo', *args), tf2_ros_cpp)
 
 
 # -- static_transform_publisher -----------------------------------------------------------------
@@ -664,14 +524,14 @@ def static_message(env: dict[str, str], command: list[str]) -> tuple[Any, tuple[
     from tf2_msgs.msg import TFMessage
 
     with running(command, env) as output:
-        with peer('sbs_static_listener', int(env['ROS_DOMAIN_ID'])) as listener:
-            capture = listener.capture(TFMessage, '/tf_static', latched=True)
-            got = eventually(lambda: capture.messages, 60.0)
+        with peer(env, 'sbs_static_listener') as listener:
+            received = capture(listener, TFMessage, '/tf_static', latched=True)
+            got = eventually(lambda: list(received), 60.0)
             assert got, (output.stdout, output.stderr)
             # the start-up log follows the publication (none with --log-level warn)
             eventually(lambda: output.stderr, 10.0)
             time.sleep(1.0)
-            messages = capture.messages
+            messages = list(received)
             offered = sorted(
                 qos_fields(info)
                 for info in listener.node.get_publishers_info_by_topic('/tf_static')
@@ -771,23 +631,17 @@ STATIC_FAILING_ARGS = [
     pytest.param(('-h', '--x', '1'), id='help-short'),
     pytest.param(('--help', '--x', 'abc'), id='help-with-error'),
     pytest.param(('--x', '1', 'a', '--help'), id='help-with-extra'),
-    pytest.param(
+    deliberate(
         ('--frame-id', 'a', '--child-frame-id', 'a'),
-        id='same-frames',
-        marks=pytest.mark.xfail(
-            reason='upstream throws std::runtime_error out of main (abort); ours logs the same '
-            'ERROR line and exits 1 (deliberate, see README)',
-            strict=True,
-        ),
+        'same-frames',
+        'upstream throws std::runtime_error out of main (abort); ours logs the same ERROR line '
+        'and exits 1',
     ),
-    pytest.param(
+    deliberate(
         ('--x', '1e999', '--frame-id', 'a', '--child-frame-id', 'b'),
-        id='number-out-of-range',
-        marks=pytest.mark.xfail(
-            reason='upstream aborts on an uncaught std::out_of_range from std::stod; ours reports '
-            'a parse error and exits 1 (deliberate, see README)',
-            strict=True,
-        ),
+        'number-out-of-range',
+        'upstream aborts on an uncaught std::out_of_range from std::stod; ours reports a parse '
+        'error and exits 1',
     ),
 ]
 
@@ -797,11 +651,8 @@ def test_static_transform_publisher_refuses_as_upstream(
     tf2_ros_cpp: dict[str, str], args: tuple[str, ...]
 ) -> None:
     """Missing and bad arguments, ``--help``: same exit code, stdout and stderr texts."""
-    theirs = run_to_end(upstream_run('tf2_ros', 'static_transform_publisher', *args), tf2_ros_cpp)
-    ours = run_to_end(ours_run('static_transform_publisher', *args), tf2_ros_cpp)
-    assert normalized(ours.stdout) == normalized(theirs.stdout)
-    assert normalized(ours.stderr) == normalized(theirs.stderr)
-    assert ours.returncode == theirs.returncode
+    upstream = upstream_run('tf2_ros', 'static_transform_publisher', *args)
+    assert_refused_alike(upstream, ours_run('static_transform_publisher', *args), tf2_ros_cpp)
 
 
 # -- view_frames ----------------------------------------------------------------------------------
@@ -878,31 +729,15 @@ def run_view_frames_side_by_side(
         return (finished(theirs), their_dir), (finished(ours), our_dir)
 
 
-def test_view_frames_dot_matches_upstream(
-    tf2_tools: dict[str, str], world_env: dict[str, str], tmp_path: Path
-) -> None:
+def test_view_frames_dot_matches_upstream(tf2_tools: dict[str, str], tmp_path: Path) -> None:
     """A static a -> b -> b2 and a dynamic b -> c: the same DOT, logs and files as view_frames."""
     env = tf2_tools
     require_executable(env, 'tf2_ros', 'static_transform_publisher')
-    statics = [
-        upstream_run(
-            'tf2_ros', 'static_transform_publisher', '--x', '1', '--frame-id', 'a',
-            '--child-frame-id', 'b',
-        ),
-        upstream_run(
-            'tf2_ros', 'static_transform_publisher', '--y', '1', '--frame-id', 'b',
-            '--child-frame-id', 'b2',
-        ),
-    ]  # fmt: skip
-    with (
-        peer('sbs_frames_feed', int(world_env['ROS_DOMAIN_ID'])) as feed,
-        running(statics[0], env),
-        running(statics[1], env),
-    ):
-        moving = RepeatingPublisher(feed.node, tf_message())
+    statics = [static_publisher('a', 'b', '--x', '1'), static_publisher('b', 'b2', '--y', '1')]
+    with tf_feed(env, 'sbs_frames_feed', tf_message(), *statics) as moving:
 
         def tick() -> None:
-            now = feed.node.get_clock().now().to_msg()
+            now = moving.node.get_clock().now().to_msg()
             moving.message = tf_message(('b', 'c', now.sec, now.nanosec, (0, 0, 1), (0, 0, 0, 1)))
 
         ticking = threading.Event()
@@ -922,7 +757,6 @@ def test_view_frames_dot_matches_upstream(
         finally:
             ticking.set()
             thread.join(timeout=5)
-            moving.close()
 
     their_code, their_out, their_err = their_result
     our_code, our_out, our_err = our_result
@@ -996,20 +830,19 @@ class RspWorld:
         from std_msgs.msg import String
         from tf2_msgs.msg import TFMessage
 
-        self.peer = RclpyPeer('sbs_rsp_probe', domain_id)
-        node = self.peer.node
-        self.tf = self.peer.capture(TFMessage, '/tf', latched=False)
-        self.tf_static = self.peer.capture(TFMessage, '/tf_static', latched=True)
-        self.description = self.peer.capture(String, '/robot_description', latched=True)
-        self.joint_states = node.create_publisher(JointState, '/joint_states', 10)
+        self.peer = RclpyNode('sbs_rsp_probe', domain_id)
+        self.tf = capture(self.peer, TFMessage, '/tf', latched=False)
+        self.tf_static = capture(self.peer, TFMessage, '/tf_static', latched=True)
+        self.description = capture(self.peer, String, '/robot_description', latched=True)
+        self.joint_states = self.peer.node.create_publisher(JointState, '/joint_states', 10)
 
     def ready(self) -> bool:
         node = self.peer.node
         return (
             RSP_NODE in node.get_node_names()
             and self.joint_states.get_subscription_count() > 0
-            and bool(self.tf_static.messages)
-            and bool(self.description.messages)
+            and bool(self.tf_static)
+            and bool(self.description)
             and node.count_publishers('/tf') > 0
         )
 
@@ -1026,7 +859,7 @@ class RspWorld:
     def tf_with_stamp(self, sec: int, nanosec: int) -> list[Any]:
         return [
             m
-            for m in self.tf.messages
+            for m in list(self.tf)
             if m.transforms
             and (m.transforms[0].header.stamp.sec, m.transforms[0].header.stamp.nanosec)
             == (sec, nanosec)
@@ -1114,6 +947,44 @@ def second_domain() -> Iterator[int]:
         yield domain
 
 
+class RspSide(NamedTuple):
+    """One robot_state_publisher of a pair: its process, its domain's watcher, its env."""
+
+    output: ProcessOutput
+    world: RspWorld
+    env: dict[str, str]
+
+
+@contextlib.contextmanager
+def rsp_pair(
+    env: dict[str, str], second_domain: int, args: Sequence[str]
+) -> Iterator[dict[str, RspSide]]:
+    """Ours (on the test's domain) and upstream's (on ``second_domain``) started with ``args``."""
+    their_env = {**env, 'ROS_DOMAIN_ID': str(second_domain)}
+    worlds = {'ours': RspWorld(int(env['ROS_DOMAIN_ID'])), 'theirs': RspWorld(second_domain)}
+    try:
+        with (
+            running([*OUR_RSP, *args], env) as ours,
+            running([*UPSTREAM_RSP, *args], their_env) as theirs,
+        ):
+            yield {
+                'ours': RspSide(ours, worlds['ours'], env),
+                'theirs': RspSide(theirs, worlds['theirs'], their_env),
+            }
+    finally:
+        for world in worlds.values():
+            world.close()
+
+
+def params_file_args(directory: Path, parameters: dict[str, Any]) -> list[str]:
+    """``--ros-args --params-file <file>`` of ``parameters`` for every node (written as launch)."""
+    params_file = directory / 'rsp.yaml'
+    params_file.write_text(
+        yaml.safe_dump({'/**': {'ros__parameters': parameters}}), encoding='utf-8'
+    )
+    return ['--ros-args', '--params-file', str(params_file)]
+
+
 @pytest.mark.parametrize('clock', ['system', 'sim'])
 @pytest.mark.parametrize('robot', ['pr2.urdf', 'panda.urdf'])
 def test_robot_state_publisher_publishes_as_upstream(
@@ -1137,53 +1008,42 @@ def test_robot_state_publisher_publishes_as_upstream(
     parameters: dict[str, Any] = {'robot_description': urdf}
     if clock == 'sim':
         parameters['use_sim_time'] = True
-    params_file = tmp_path / 'rsp.yaml'
-    params_file.write_text(
-        yaml.safe_dump({'/**': {'ros__parameters': parameters}}), encoding='utf-8'
-    )
-    args = ['--ros-args', '--params-file', str(params_file)]
-    our_env = jazzy_env
-    their_env = {**jazzy_env, 'ROS_DOMAIN_ID': str(second_domain)}
-    worlds = {
-        'ours': RspWorld(int(our_env['ROS_DOMAIN_ID'])),
-        'theirs': RspWorld(second_domain),
-    }
-    try:
-        with (
-            running([*OUR_RSP, *args], our_env) as ours,
-            running([*UPSTREAM_RSP, *args], their_env) as theirs,
-        ):
-            for name, output in (('ours', ours), ('theirs', theirs)):
-                assert eventually(worlds[name].ready, 60.0), (name, output.stdout, output.stderr)
-            for sec, nanosec, names, positions in joint_state_steps(urdf):
+    args = params_file_args(tmp_path, parameters)
+    with rsp_pair(jazzy_env, second_domain, args) as sides:
+        ours, theirs = sides['ours'].output, sides['theirs'].output
+        worlds = {name: side.world for name, side in sides.items()}
+        for name, side in sides.items():
+            assert eventually(side.world.ready, 60.0), (
+                name,
+                side.output.stdout,
+                side.output.stderr,
+            )
+        for sec, nanosec, names, positions in joint_state_steps(urdf):
 
-                def arrived(sec: int = sec, nanosec: int = nanosec) -> bool:
-                    return all(w.tf_with_stamp(sec, nanosec) for w in worlds.values())
+            def arrived(sec: int = sec, nanosec: int = nanosec) -> bool:
+                return all(w.tf_with_stamp(sec, nanosec) for w in worlds.values())
 
-                for _attempt in range(10):  # best-effort subscriptions: resend if lost
-                    for world in worlds.values():
-                        if not world.tf_with_stamp(sec, nanosec):
-                            world.publish(sec, nanosec, names, positions)
-                    if eventually(arrived, 3.0, 0.05):
-                        break
-                assert arrived(), (sec, ours.stderr, theirs.stderr)
-            time.sleep(0.5)
-            graphs = {name: world.graph() for name, world in worlds.items()}
-            parameters = {
-                'ours': rsp_parameters(our_env, RSP_ADDITIONS),
-                'theirs': rsp_parameters(their_env),
-            }
-            assert ours.process.poll() is None, ours.stderr
-            assert theirs.process.poll() is None, theirs.stderr
-            # start-up logs (kdl_parser's warnings, 'Robot initialized'), Ctrl-C, exit code
-            logs = {'ours': finished(ours), 'theirs': finished(theirs)}
+            for _attempt in range(10):  # best-effort subscriptions: resend if lost
+                for world in worlds.values():
+                    if not world.tf_with_stamp(sec, nanosec):
+                        world.publish(sec, nanosec, names, positions)
+                if eventually(arrived, 3.0, 0.05):
+                    break
+            assert arrived(), (sec, ours.stderr, theirs.stderr)
+        time.sleep(0.5)
+        graphs = {name: world.graph() for name, world in worlds.items()}
+        parameters = {
+            'ours': rsp_parameters(sides['ours'].env, RSP_ADDITIONS),
+            'theirs': rsp_parameters(sides['theirs'].env),
+        }
+        assert ours.process.poll() is None, ours.stderr
+        assert theirs.process.poll() is None, theirs.stderr
+        # start-up logs (kdl_parser's warnings, 'Robot initialized'), Ctrl-C, exit code
+        logs = {'ours': finished(ours), 'theirs': finished(theirs)}
         captured = {
-            name: (world.tf.messages, world.tf_static.messages, world.description.messages)
+            name: (list(world.tf), list(world.tf_static), list(world.description))
             for name, world in worlds.items()
         }
-    finally:
-        for world in worlds.values():
-            world.close()
 
     assert logs['ours'] == logs['theirs']
     our_tf, our_static, our_description = captured['ours']
@@ -1223,21 +1083,12 @@ def start_rsp_pair(
     env: dict[str, str], second_domain: int, args: Sequence[str]
 ) -> dict[str, tuple[Any, tuple[Any, ...]]]:
     """Start ours (test domain) and upstream's (second domain) with ``args``; graph and logs."""
-    their_env = {**env, 'ROS_DOMAIN_ID': str(second_domain)}
-    worlds = {'ours': RspWorld(int(env['ROS_DOMAIN_ID'])), 'theirs': RspWorld(second_domain)}
     results = {}
-    try:
-        with (
-            running([*OUR_RSP, *args], env) as ours,
-            running([*UPSTREAM_RSP, *args], their_env) as theirs,
-        ):
-            for name, output in (('ours', ours), ('theirs', theirs)):
-                ready = eventually(worlds[name].ready, 60.0)
-                graph = worlds[name].graph() if ready else None
-                results[name] = (graph, finished(output))
-    finally:
-        for world in worlds.values():
-            world.close()
+    with rsp_pair(env, second_domain, args) as sides:
+        for name, side in sides.items():
+            ready = eventually(side.world.ready, 60.0)
+            graph = side.world.graph() if ready else None
+            results[name] = (graph, finished(side.output))
     return results
 
 
@@ -1252,15 +1103,9 @@ def test_robot_state_publisher_subscribes_as_upstream(
 ) -> None:
     """The node's subscriptions (topics and types) are the same as upstream's."""
     require_executable(jazzy_env, 'robot_state_publisher', 'robot_state_publisher')
-    params_file = tmp_path / 'rsp.yaml'
     urdf = (ROBOTS / 'panda.urdf').read_text(encoding='utf-8')
-    params_file.write_text(
-        yaml.safe_dump({'/**': {'ros__parameters': {'robot_description': urdf}}}),
-        encoding='utf-8',
-    )
-    results = start_rsp_pair(
-        jazzy_env, second_domain, ['--ros-args', '--params-file', str(params_file)]
-    )
+    args = params_file_args(tmp_path, {'robot_description': urdf})
+    results = start_rsp_pair(jazzy_env, second_domain, args)
     their_graph, _ = results['theirs']
     our_graph, _ = results['ours']
     assert their_graph is not None
