@@ -288,7 +288,7 @@ def test_ros_discovery_info_follows_entity_and_node_changes(world):
     """ros_discovery_info is republished when a publisher or a node goes away."""
     from tf_demo.msgs import cdr
     from tf_demo.msgs import rmw_dds_common
-    from tf_demo.transport import dds_wire
+    from tf_demo.transport.dds import wire as dds_wire
 
     participant = dds_wire.get_participant()
     reader = participant.create_reader(

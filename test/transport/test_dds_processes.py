@@ -29,7 +29,7 @@ pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)
 from conftest import ChildProcess
 from tf_demo.msgs import cdr
 from tf_demo.msgs import rmw_dds_common
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import wire as dds_wire
 
 pytestmark = [pytest.mark.dds, pytest.mark.timeout(120)]
 

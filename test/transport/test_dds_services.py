@@ -36,8 +36,8 @@ from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import rcl_interfaces
 from tf_demo.msgs import tf2_msgs
 from tf_demo.transport import dds_backend
-from tf_demo.transport import dds_services
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import service_wire
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.qos import qos_profile_rosout_default
 from tf_demo.transport.parameters import Parameter
 from tf_demo.transport.parameters import ParameterDescriptor
@@ -104,13 +104,13 @@ def test_service_types_have_rmw_names() -> None:
 def test_request_sample_layout_is_rmw_cyclonedds() -> None:
     """Encapsulation, then client id and sequence number (8 + 8 bytes), then the CDR body."""
     request = rcl_interfaces.GetParameters.Request(names=['radius'])
-    header = dds_services.RequestHeader(0x0102030405060708, 7)
-    sample = dds_services.encode_sample(header, request)
+    header = service_wire.RequestHeader(0x0102030405060708, 7)
+    sample = service_wire.encode_sample(header, request)
     body = cdr.serialize(request)
     assert sample[:4] == b'\x00\x01\x00\x00'
     assert sample[4:20] == struct.pack('<Qq', 0x0102030405060708, 7)
     assert sample[20:] == body[4:]
-    decoded_header, decoded = dds_services.decode_sample(
+    decoded_header, decoded = service_wire.decode_sample(
         rcl_interfaces.GetParameters.Request, sample
     )
     assert decoded_header == header
@@ -120,7 +120,7 @@ def test_request_sample_layout_is_rmw_cyclonedds() -> None:
 def test_big_endian_samples_decode() -> None:
     """The header follows the sample's byte order (byte 1 of the encapsulation)."""
     big = b'\x00\x00\x00\x00' + struct.pack('>Qq', 5, 9) + struct.pack('>I', 0)
-    header, request = dds_services.decode_sample(rcl_interfaces.GetParameters.Request, big)
+    header, request = service_wire.decode_sample(rcl_interfaces.GetParameters.Request, big)
     assert (header.guid, header.sequence_number) == (5, 9)
     assert list(request.names) == []
 
@@ -129,15 +129,15 @@ def test_big_endian_samples_decode() -> None:
 def test_short_or_garbage_samples_raise_cdr_error(data: bytes) -> None:
     """Samples without a full header or body raise CdrError (dropped by the node)."""
     with pytest.raises(cdr.CdrError):
-        dds_services.decode_sample(rcl_interfaces.GetParameters.Request, data)
+        service_wire.decode_sample(rcl_interfaces.GetParameters.Request, data)
 
 
 def test_client_service_ids_are_spelled_as_rmw_cyclonedds() -> None:
     """GUID prefix + big-endian counter, hex, first byte width 2, dots between."""
     guid = bytes(range(1, 17))
-    text = dds_services.client_service_id(guid, counter=0x0102)
+    text = service_wire.client_service_id(guid, counter=0x0102)
     assert text == ' 1.2.3.4.5.6.7.8.9.a.b.c.0.0.1.2'
-    assert dds_services.parse_user_data(f'clientid={text};typehash=RIHS01_x;'.encode()) == {
+    assert service_wire.parse_user_data(f'clientid={text};typehash=RIHS01_x;'.encode()) == {
         'clientid': text,
         'typehash': 'RIHS01_x',
     }
@@ -154,9 +154,9 @@ def test_golden_service_samples_from_real_jazzy(path: Path) -> None:
     msg_type = getattr(getattr(module, entry['service']), entry['part'])
     data = path.read_bytes()
     assert len(data) == entry['bytes']
-    header, message = dds_services.decode_sample(msg_type, data)
+    header, message = service_wire.decode_sample(msg_type, data)
     assert header.sequence_number >= 1
-    again = dds_services.encode_sample(header, message)
+    again = service_wire.encode_sample(header, message)
     assert again == data[: len(again)]
     assert not any(data[len(again) :])  # only DDS padding after it
     assert GOLDEN_VALUES[path.stem](message)
@@ -468,7 +468,7 @@ def test_garbage_requests_do_not_stop_the_node(world: None) -> None:
     client = caller.create_client(rcl_interfaces.GetParameters, '/params/get_parameters')
     participant = dds_wire.get_participant()
     raw = participant.create_writer(
-        dds_services.request_topic('/params/get_parameters'),
+        service_wire.request_topic('/params/get_parameters'),
         rcl_interfaces.GetParameters.Request.__dds_typename__,
         dds_wire.EndpointQos(depth=10),
         b'clientid=garbage;',

@@ -30,8 +30,8 @@ from cyclonedds.builtin import BuiltinTopicDcpsSubscription
 from cyclonedds.qos import Policy
 from tf_demo.msgs import cdr
 from tf_demo.msgs import tf2_msgs
-from tf_demo.transport import dds_wire
 from tf_demo.transport.clock import Duration
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.qos import DurabilityPolicy
 from tf_demo.transport.qos import HistoryPolicy
 from tf_demo.transport.qos import LivelinessPolicy

@@ -26,7 +26,7 @@ import threading
 from typing import Protocol
 import weakref
 
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.graph import _Graph
 from tf_demo.transport.dds.graph import GraphNode
 

@@ -27,7 +27,7 @@ from typing import Protocol
 from typing import TYPE_CHECKING
 from typing import TypeAlias
 
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.clock import ROSClock
 from tf_demo.transport.dds.context import _context

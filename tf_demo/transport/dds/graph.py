@@ -20,7 +20,7 @@ from collections.abc import Iterable
 import threading
 from typing import Protocol
 
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.endpoints import _FLUSH_TIMEOUT_NS
 
 

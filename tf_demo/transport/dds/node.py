@@ -31,7 +31,7 @@ from typing import cast
 from typing import Protocol
 import weakref
 
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
 from tf_demo.transport.dds.clock import Clock
@@ -49,9 +49,9 @@ from tf_demo.transport.dds.names import expand_topic_name
 from tf_demo.transport.dds.names import validate_namespace
 from tf_demo.transport.dds.names import validate_node_name
 from tf_demo.transport.dds.node_parameters import NodeParametersMixin
+from tf_demo.transport.dds.node_services import NodeServicesMixin
 from tf_demo.transport.dds.time_source import TimeSource
 from tf_demo.transport.dds.timers import DdsTimer
-from tf_demo.transport.dds_services import NodeServicesMixin
 
 
 class _NodeExecutor(Protocol):
@@ -106,8 +106,8 @@ class DdsNode(NodeParametersMixin, NodeServicesMixin):
         del context, enable_logger_service
         from tf_demo.transport import ros_args
         from tf_demo.transport.dds.logging import get_logger
+        from tf_demo.transport.dds.parameter_services import NodeInterfaces
         from tf_demo.transport.dds.parameter_store import ParameterStore
-        from tf_demo.transport.dds_parameter_services import NodeInterfaces
 
         if not _context.ok():
             msg = (

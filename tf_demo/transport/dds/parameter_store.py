@@ -25,18 +25,16 @@ from __future__ import annotations
 from collections.abc import Iterable
 from collections.abc import Mapping
 from collections.abc import Sequence
-import math
 import threading
 from typing import Any
 import warnings
 
-from tf_demo.transport.dds.parameters import FloatingPointRange
-from tf_demo.transport.dds.parameters import IntegerRange
+from tf_demo.transport.dds.parameters import check_floating_point_range
+from tf_demo.transport.dds.parameters import check_integer_range
 from tf_demo.transport.dds.parameters import InvalidParameterException
 from tf_demo.transport.dds.parameters import InvalidParameterTypeException
 from tf_demo.transport.dds.parameters import InvalidParameterValueException
 from tf_demo.transport.dds.parameters import OnSetCallback
-from tf_demo.transport.dds.parameters import PARAM_REL_TOL
 from tf_demo.transport.dds.parameters import Parameter
 from tf_demo.transport.dds.parameters import ParameterAlreadyDeclaredException
 from tf_demo.transport.dds.parameters import ParameterDescriptor
@@ -424,9 +422,9 @@ class ParameterStore:
             )
             return SetParametersResult(successful=False, reason=reason)
         if parameter.type_ is ParameterType.INTEGER and descriptor.integer_range:
-            return _check_integer_range(parameter, descriptor.integer_range[0])
+            return check_integer_range(parameter, descriptor.integer_range[0])
         if parameter.type_ is ParameterType.DOUBLE and descriptor.floating_point_range:
-            return _check_floating_point_range(parameter, descriptor.floating_point_range[0])
+            return check_floating_point_range(parameter, descriptor.floating_point_range[0])
         return SetParametersResult(successful=True)
 
     # -- callbacks -----------------------------------------------------------------------------
@@ -460,47 +458,3 @@ class ParameterStore:
         """Remove a post-set callback (ValueError when absent, as list.remove)."""
         with self._lock:
             self._post_set_callbacks.remove(callback)
-
-
-def _check_integer_range(parameter: Parameter, allowed: IntegerRange) -> SetParametersResult:
-    low = min(allowed.from_value, allowed.to_value)
-    high = max(allowed.from_value, allowed.to_value)
-    value = parameter.value
-    if value in (low, high):
-        return SetParametersResult(successful=True)
-    if not low < value < high:
-        reason = (
-            f'Parameter {parameter.name} out of range. Min: {low}, Max: {high}, value: {value}'
-        )
-        return SetParametersResult(successful=False, reason=reason)
-    if allowed.step != 0 and (value - low) % allowed.step != 0:
-        reason = (
-            f'The parameter value for {parameter.name} is not a valid step. '
-            f'Min: {low}, max: {high}, value: {value}, step: {allowed.step}'
-        )
-        return SetParametersResult(successful=False, reason=reason)
-    return SetParametersResult(successful=True)
-
-
-def _check_floating_point_range(
-    parameter: Parameter, allowed: FloatingPointRange
-) -> SetParametersResult:
-    low = min(allowed.from_value, allowed.to_value)
-    high = max(allowed.from_value, allowed.to_value)
-    value = parameter.value
-    if math.isclose(value, low, rel_tol=PARAM_REL_TOL) or math.isclose(
-        value, high, rel_tol=PARAM_REL_TOL
-    ):
-        return SetParametersResult(successful=True)
-    if not low < value < high:
-        reason = f'Parameter {parameter.name} out of range Min: {low}, Max: {high}, value: {value}'
-        return SetParametersResult(successful=False, reason=reason)
-    if allowed.step != 0.0:
-        steps = round((value - low) / allowed.step)
-        if not math.isclose(low + steps * allowed.step, value, rel_tol=PARAM_REL_TOL):
-            reason = (
-                f'The parameter value for {parameter.name} is not close enough to a valid step. '
-                f'Min: {low}, max: {high}, value: {value}, step: {allowed.step}'
-            )
-            return SetParametersResult(successful=False, reason=reason)
-    return SetParametersResult(successful=True)

@@ -29,6 +29,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from dataclasses import field
 from enum import Enum
+import math
 from typing import Any
 
 from tf_demo.msgs import rcl_interfaces
@@ -53,6 +54,8 @@ __all__ = [
     'PostSetCallback',
     'PreSetCallback',
     'SetParametersResult',
+    'check_floating_point_range',
+    'check_integer_range',
     'parameter_from_msg',
     'parameter_to_msg',
     'parameter_value_to_msg',
@@ -358,3 +361,47 @@ PostSetCallback = Callable[[list[Parameter]], None]
 ParameterEventSink = Callable[[list[Parameter], list[Parameter], list[Parameter]], None]
 # Relative tolerance of floating point range checks (rclpy's Node.PARAM_REL_TOL).
 PARAM_REL_TOL = 1e-6
+
+
+def check_integer_range(parameter: Parameter, allowed: IntegerRange) -> SetParametersResult:
+    low = min(allowed.from_value, allowed.to_value)
+    high = max(allowed.from_value, allowed.to_value)
+    value = parameter.value
+    if value in (low, high):
+        return SetParametersResult(successful=True)
+    if not low < value < high:
+        reason = (
+            f'Parameter {parameter.name} out of range. Min: {low}, Max: {high}, value: {value}'
+        )
+        return SetParametersResult(successful=False, reason=reason)
+    if allowed.step != 0 and (value - low) % allowed.step != 0:
+        reason = (
+            f'The parameter value for {parameter.name} is not a valid step. '
+            f'Min: {low}, max: {high}, value: {value}, step: {allowed.step}'
+        )
+        return SetParametersResult(successful=False, reason=reason)
+    return SetParametersResult(successful=True)
+
+
+def check_floating_point_range(
+    parameter: Parameter, allowed: FloatingPointRange
+) -> SetParametersResult:
+    low = min(allowed.from_value, allowed.to_value)
+    high = max(allowed.from_value, allowed.to_value)
+    value = parameter.value
+    if math.isclose(value, low, rel_tol=PARAM_REL_TOL) or math.isclose(
+        value, high, rel_tol=PARAM_REL_TOL
+    ):
+        return SetParametersResult(successful=True)
+    if not low < value < high:
+        reason = f'Parameter {parameter.name} out of range Min: {low}, Max: {high}, value: {value}'
+        return SetParametersResult(successful=False, reason=reason)
+    if allowed.step != 0.0:
+        steps = round((value - low) / allowed.step)
+        if not math.isclose(low + steps * allowed.step, value, rel_tol=PARAM_REL_TOL):
+            reason = (
+                f'The parameter value for {parameter.name} is not close enough to a valid step. '
+                f'Min: {low}, max: {high}, value: {value}, step: {allowed.step}'
+            )
+            return SetParametersResult(successful=False, reason=reason)
+    return SetParametersResult(successful=True)

@@ -32,7 +32,7 @@ from typing import Any
 import weakref
 
 from tf_demo.msgs import rcl_interfaces
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.parameters import Parameter
 from tf_demo.transport.dds.parameters import parameter_from_msg
 from tf_demo.transport.dds.parameters import parameter_to_msg
@@ -263,7 +263,7 @@ class NodeInterfaces:
     def __init__(
         self, node: Any, *, enable_rosout: bool = True, start_parameter_services: bool = True
     ) -> None:
-        from tf_demo.transport.dds_rosout import RosoutPublisher
+        from tf_demo.transport.dds.rosout import RosoutPublisher
 
         self.events = ParameterEventPublisher(node)
         self.rosout: RosoutPublisher | None = None

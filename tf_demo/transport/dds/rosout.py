@@ -31,7 +31,7 @@ from typing import Any
 from tf_demo.msgs import builtin_interfaces
 from tf_demo.msgs import cdr
 from tf_demo.msgs import rcl_interfaces
-from tf_demo.transport import dds_wire
+from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.logging import add_log_sink
 from tf_demo.transport.dds.logging import LogRecord
 from tf_demo.transport.dds.logging import remove_log_sink

@@ -15,17 +15,12 @@
 """
 ROS 2 services over DDS, mapped exactly as Jazzy's rmw_cyclonedds_cpp maps them.
 
-A service ``/a/b`` is a request topic ``rq/a/bRequest`` (type ``pkg::srv::dds_::Name_Request_``)
-and a reply topic ``rr/a/bReply`` (``..._Response_``). Every sample carries rmw_cyclonedds'
-request header in front of the CDR body: after the 4-byte encapsulation header, the client's
-64-bit id (the instance handle of its request writer) and the 64-bit sequence number, in the
-sample's byte order; the body follows, its alignment unchanged (16 is a multiple of 8).
 A server's request reader and reply writer carry ``serviceid=<id>;`` in USER_DATA, a client's
 request writer and reply reader ``clientid=<id>;`` (then ``typehash=`` of the request or response
 type): that is how either side pairs the two endpoints of its peer. A client sees a server as
 available once it matched a request reader and a reply writer with the same service id; a server
 answers only once it matched the reply reader of the requesting client (waiting up to 100 ms,
-as rmw_cyclonedds does).
+as rmw_cyclonedds does). The wire format is :mod:`tf_demo.transport.dds.service_wire`'s.
 
 :class:`DdsService` and :class:`DdsClient` have rclpy's ``Service`` and ``Client`` API; the
 executors serve them like subscriptions (read condition, callback group, ``take_messages`` then
@@ -35,9 +30,7 @@ executors serve them like subscriptions (read condition, callback group, ``take_
 from __future__ import annotations
 
 from collections.abc import Callable
-import ctypes
 import itertools
-import struct
 import threading
 import time
 from typing import Any
@@ -49,152 +42,24 @@ from cyclonedds.builtin_types import cqos_to_qos
 from cyclonedds.builtin_types import endpoint_constructor
 from cyclonedds.qos import Policy
 from tf_demo.msgs import cdr
-from tf_demo.transport import dds_participant
-from tf_demo.transport import dds_wire
-from tf_demo.transport.dds.context import _graph_changed
-from tf_demo.transport.dds.qos import qos_profile_services_default
+from tf_demo.transport.dds import wire as dds_wire
+from tf_demo.transport.dds.cyclone_c import instance_handle
+from tf_demo.transport.dds.cyclone_c import matched_handles
+from tf_demo.transport.dds.service_wire import client_service_id
+from tf_demo.transport.dds.service_wire import decode_sample
+from tf_demo.transport.dds.service_wire import encode_sample
+from tf_demo.transport.dds.service_wire import parse_user_data
+from tf_demo.transport.dds.service_wire import reply_topic
+from tf_demo.transport.dds.service_wire import request_topic
+from tf_demo.transport.dds.service_wire import RequestHeader
 from tf_demo.transport.future import Future
 
-__all__ = [
-    'DdsClient',
-    'DdsService',
-    'Future',
-    'NodeServicesMixin',
-    'RequestHeader',
-    'client_service_id',
-    'decode_sample',
-    'encode_sample',
-    'parse_user_data',
-    'reply_topic',
-    'request_topic',
-]
-
+__all__ = ['DdsClient', 'DdsService', 'Future']
 
 _TAKE_BATCH = 64
-_HEADER = {1: struct.Struct('<Qq'), 0: struct.Struct('>Qq')}
-_HEADER_SIZE = 4 + 16
 #: How long a server waits for the requesting client's reply reader (rmw_cyclonedds: 100 ms).
 _REPLY_READER_WAIT_S = 0.1
 _POLL_S = 0.01
-
-_lib: Any = dds_participant._lib
-_lib.dds_get_instance_handle.restype = ctypes.c_int32
-_lib.dds_get_instance_handle.argtypes = [ctypes.c_int32, ctypes.POINTER(ctypes.c_uint64)]
-for _name in ('dds_get_matched_subscriptions', 'dds_get_matched_publications'):
-    getattr(_lib, _name).restype = ctypes.c_int32
-    getattr(_lib, _name).argtypes = [
-        ctypes.c_int32,
-        ctypes.POINTER(ctypes.c_uint64),
-        ctypes.c_size_t,
-    ]
-
-
-# --------------------------------------------------------------------------------------------
-# Wire format (pure)
-# --------------------------------------------------------------------------------------------
-
-
-class RequestHeader(tuple[int, int]):
-    """rmw_cyclonedds' ``cdds_request_header_t``: ``(client id, sequence number)``."""
-
-    __slots__ = ()
-
-    def __new__(cls, guid: int, sequence_number: int) -> RequestHeader:
-        """Make a header from the client's 64-bit id and the request's sequence number."""
-        return super().__new__(cls, (guid, sequence_number))
-
-    @property
-    def guid(self) -> int:
-        """The client's id: the instance handle of its request writer."""
-        return self[0]
-
-    @property
-    def sequence_number(self) -> int:
-        """The request's sequence number (the reply repeats it)."""
-        return self[1]
-
-
-def encode_sample(header: RequestHeader, message: Any) -> bytes:
-    """Serialize ``message`` with rmw_cyclonedds' request header after the encapsulation."""
-    payload = cdr.serialize(message)
-    return payload[:4] + _HEADER[1].pack(header.guid, header.sequence_number) + payload[4:]
-
-
-def decode_sample(msg_type: Any, data: bytes) -> tuple[RequestHeader, Any]:
-    """
-    Split a request or reply sample into its header and decoded message.
-
-    :raises cdr.CdrError: too short, wrong encapsulation or a malformed body.
-    """
-    if len(data) < _HEADER_SIZE or data[0] != 0 or data[1] > 1:
-        msg = f'not a ROS 2 service sample ({len(data)} bytes, header {bytes(data[:4]).hex()})'
-        raise cdr.CdrError(msg)
-    guid, sequence_number = _HEADER[data[1]].unpack_from(data, 4)
-    message = cdr.deserialize(msg_type, bytes(data[:4]) + bytes(data[_HEADER_SIZE:]))
-    return RequestHeader(guid, sequence_number), message
-
-
-def request_topic(service_name: str) -> str:
-    """Return the DDS request topic of the fully qualified ``service_name``."""
-    return f'rq{service_name}Request'
-
-
-def reply_topic(service_name: str) -> str:
-    """Return the DDS reply topic of the fully qualified ``service_name``."""
-    return f'rr{service_name}Reply'
-
-
-_id_counter = itertools.count(1)
-_id_lock = threading.Lock()
-
-
-def client_service_id(participant_guid: bytes, counter: int | None = None) -> str:
-    """
-    Return a new client/service id as rmw_cyclonedds spells it in USER_DATA.
-
-    The participant's 12-byte GUID prefix and a big-endian 32-bit counter, in hex, the first
-    byte two characters wide (space padded), the others unpadded, separated by dots.
-    """
-    if counter is None:
-        with _id_lock:
-            counter = next(_id_counter)
-    data = participant_guid[:12] + (counter & 0xFFFFFFFF).to_bytes(4, 'big')
-    return f'{data[0]:2x}' + ''.join(f'.{byte:x}' for byte in data[1:])
-
-
-def parse_user_data(data: bytes) -> dict[str, str]:
-    """Parse ``key=value;`` USER_DATA as rmw_dds_common does (later keys win)."""
-    result: dict[str, str] = {}
-    for item in data.split(b';'):
-        key, sep, value = item.partition(b'=')
-        if sep and key:
-            result[key.decode(errors='replace')] = value.decode(errors='replace')
-    return result
-
-
-# --------------------------------------------------------------------------------------------
-# Endpoints
-# --------------------------------------------------------------------------------------------
-
-
-def _instance_handle(entity: int) -> int:
-    handle = ctypes.c_uint64()
-    dds_participant._check(
-        _lib.dds_get_instance_handle(entity, ctypes.byref(handle)), 'instance handle'
-    )
-    return int(handle.value)
-
-
-def _matched(entity: int, *, subscriptions: bool) -> list[int]:
-    function = (
-        _lib.dds_get_matched_subscriptions if subscriptions else _lib.dds_get_matched_publications
-    )
-    count = function(entity, None, 0)
-    if count <= 0:
-        return []
-    handles = (ctypes.c_uint64 * count)()
-    count = function(entity, handles, count)
-    return [int(handles[i]) for i in range(max(count, 0))]
 
 
 def _user_data_key(entity: int, handle: int, key: str, *, subscription: bool) -> str | None:
@@ -260,7 +125,7 @@ class _Endpoints:
         except BaseException:
             self.writer.close()
             raise
-        self.writer_handle = _instance_handle(self.writer.handle)
+        self.writer_handle = instance_handle(self.writer.handle)
 
     def close(self) -> None:
         self.reader.close()
@@ -384,10 +249,10 @@ class DdsService(_Entity):
         )
         if client_id is None:
             # Gone, or an old client without an id: rmw_cyclonedds sends when the latter.
-            return publication in _matched(endpoints.reader.handle, subscriptions=False)
+            return publication in matched_handles(endpoints.reader.handle, subscriptions=False)
         deadline = time.monotonic() + _REPLY_READER_WAIT_S
         while True:
-            for handle in _matched(endpoints.writer.handle, subscriptions=True):
+            for handle in matched_handles(endpoints.writer.handle, subscriptions=True):
                 found = _user_data_key(
                     endpoints.writer.handle, handle, 'clientid', subscription=True
                 )
@@ -430,8 +295,8 @@ class DdsClient(_Entity):
     def service_is_ready(self) -> bool:
         """Whether a server's request reader and reply writer (same service id) are matched."""
         endpoints = self._endpoints
-        readers = _matched(endpoints.writer.handle, subscriptions=True)
-        writers = _matched(endpoints.reader.handle, subscriptions=False)
+        readers = matched_handles(endpoints.writer.handle, subscriptions=True)
+        writers = matched_handles(endpoints.reader.handle, subscriptions=False)
         ids = {
             found
             for handle in readers
@@ -527,116 +392,3 @@ class DdsClient(_Entity):
         """Destroy this client (same as ``node.destroy_client(self)``)."""
         node = self._node_ref()
         return bool(node.destroy_client(self)) if node is not None else False
-
-
-# --------------------------------------------------------------------------------------------
-# The node's side
-# --------------------------------------------------------------------------------------------
-
-
-class NodeServicesMixin:
-    """
-    rclpy's service and client methods of :class:`~tf_demo.transport.dds.node.DdsNode`.
-
-    The node provides ``_lock``, ``_services``, ``_clients``, ``_participant``,
-    ``_default_callback_group``, ``resolve_topic_name``, ``get_logger``, ``_check_alive``,
-    ``_wake_executors`` and ``_detach``.
-    """
-
-    _lock: Any
-    _services: list[DdsService]
-    _clients: list[DdsClient]
-    _default_callback_group: Any
-
-    def create_service(
-        self,
-        srv_type: Any,
-        srv_name: str,
-        callback: Callable[[Any, Any], Any],
-        *,
-        qos_profile: Any = qos_profile_services_default,
-        callback_group: Any = None,
-    ) -> DdsService:
-        """
-        Create a service server; ``callback(request, response)`` returns the response.
-
-        It is answered by the executor that spins the node, in ``callback_group`` (default:
-        the node's default group); QoS default: ``qos_profile_services_default``.
-        """
-        node = cast('Any', self)
-        node._check_alive()
-        group = callback_group or self._default_callback_group
-        name = node.resolve_topic_name(srv_name)
-        service = DdsService(
-            node,
-            srv_type,
-            name,
-            callback,
-            qos_profile,
-            group,
-        )
-        group.add_entity(service)
-        with self._lock:
-            self._services.append(service)
-        node._wake_executors()
-        _graph_changed()
-        return service
-
-    def create_client(
-        self,
-        srv_type: Any,
-        srv_name: str,
-        *,
-        qos_profile: Any = qos_profile_services_default,
-        callback_group: Any = None,
-    ) -> DdsClient:
-        """Create a service client (replies are taken by the executor that spins the node)."""
-        node = cast('Any', self)
-        node._check_alive()
-        group = callback_group or self._default_callback_group
-        name = node.resolve_topic_name(srv_name)
-        client = DdsClient(node, srv_type, name, qos_profile, group)
-        group.add_entity(client)
-        with self._lock:
-            self._clients.append(client)
-        node._wake_executors()
-        _graph_changed()
-        return client
-
-    def destroy_service(self, service: DdsService) -> bool:
-        """Destroy ``service``."""
-        node = cast('Any', self)
-        if not node._detach(self._services, service):
-            return False
-        node._wake_executors()
-        service._close()
-        _graph_changed()
-        return True
-
-    def destroy_client(self, client: DdsClient) -> bool:
-        """Destroy ``client`` (its pending futures are cancelled)."""
-        node = cast('Any', self)
-        if not node._detach(self._clients, client):
-            return False
-        node._wake_executors()
-        client._close()
-        _graph_changed()
-        return True
-
-    @property
-    def services(self) -> list[DdsService]:
-        """The node's service servers (the parameter services included, as in rclpy)."""
-        return list(self._services)
-
-    @property
-    def clients(self) -> list[DdsClient]:
-        """The node's service clients."""
-        return list(self._clients)
-
-    def _service_reader_gids(self) -> list[bytes]:
-        """Request readers of servers, reply readers of clients (rmw's graph entries)."""
-        return [entity.reader_gid for entity in [*self._services, *self._clients]]
-
-    def _service_writer_gids(self) -> list[bytes]:
-        """Reply writers of servers, request writers of clients."""
-        return [entity.writer_gid for entity in [*self._services, *self._clients]]
