@@ -31,6 +31,7 @@ from tf_demo.msgs.convert import ns_from_stamp
 from tf_demo.ros import Buffer
 from tf_demo.ros import TransformListener
 from tf_demo.transport.clock import Duration
+from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import nav_msgs
 from tf_demo.transport.messages import tf2_msgs
 from tf_demo.transport.qos import DynamicListenerQoS
@@ -110,7 +111,7 @@ def test_late_listener_gets_static_and_interpolates_the_analytic_circle(
                 )
 
     observer.create_subscription(tf2_msgs.TFMessage, '/tf', record, DynamicListenerQoS())
-    executor = transport.SingleThreadedExecutor()
+    executor = SingleThreadedExecutor()
     executor.add_node(observer)
     deadline = time.monotonic() + STARTUP_TIMEOUT_S
     while len(samples) < 10 and time.monotonic() < deadline:
@@ -224,7 +225,7 @@ def test_odom_tf_broadcaster_republishes_odometry_with_its_stamp(spawn: Any, ros
     odom.header.frame_id, odom.child_frame_id = 'odom', 'base_link'
     odom.pose.pose.position.x, odom.pose.pose.position.y = 1.5, -2.5
     odom.pose.pose.orientation.z, odom.pose.pose.orientation.w = math.sqrt(0.5), math.sqrt(0.5)
-    executor = transport.SingleThreadedExecutor()
+    executor = SingleThreadedExecutor()
     executor.add_node(node)
     deadline = time.monotonic() + STARTUP_TIMEOUT_S
     while not received and time.monotonic() < deadline and broadcaster.poll() is None:

@@ -28,6 +28,7 @@ import shutil
 import subprocess
 import sys
 import time
+from typing import Any
 
 from conftest import ChildProcess
 import pytest
@@ -92,14 +93,19 @@ def python_peer(*args: str) -> list[str]:
     return [sys.executable, str(HELPER), *args]
 
 
-def test_c_publisher_reaches_dds_node_on_tf(c_peer, run):
-    """TFMessages written by the rmw-like C writer on rt/tf arrive intact in a DdsNode."""
-    subscriber = run(*python_peer('sub', '--count', '5'))
+def received_from_c(c_binary: Path, run: Any, count: int) -> list[str]:
+    """``count`` TFMessages from the C writer on rt/tf: the lines a DdsNode printed for them."""
+    subscriber = run(*python_peer('sub', '--count', str(count)))
     subscriber.wait_for_line('ready')
-    publisher = run(str(c_peer), 'pub-tf', '5', '20')
+    publisher = run(str(c_binary), 'pub-tf', str(count), '20')
     assert publisher.finish() == 0, publisher.stderr
     assert subscriber.finish() == 0
-    assert [line for line in subscriber.stdout if line.startswith('msg ')] == [
+    return [line for line in subscriber.stdout if line.startswith('msg ')]
+
+
+def test_c_publisher_reaches_dds_node_on_tf(c_peer, run):
+    """TFMessages written by the rmw-like C writer on rt/tf arrive intact in a DdsNode."""
+    assert received_from_c(c_peer, run, 5) == [
         f'msg c_child {i} c_parent 0.25 -1.5 0 0 0.6 0.8' for i in range(5)
     ]
 
@@ -160,11 +166,6 @@ def test_typed_c_peer_matches_by_type_name_because_we_send_no_type_information(c
     """A C peer that does send type information still matches: our side sends none."""
     # Were our placeholder type's information on the wire, Cyclone would compare it with the
     # peer's real TFMessage_ type, find them not assignable and never match.
-    subscriber = run(*python_peer('sub', '--count', '3'))
-    subscriber.wait_for_line('ready')
-    publisher = run(str(c_peer_typed), 'pub-tf', '3', '20')
-    assert publisher.finish() == 0, publisher.stderr
-    assert subscriber.finish() == 0
-    assert [line.split()[:3] for line in subscriber.stdout if line.startswith('msg ')] == [
+    assert [line.split()[:3] for line in received_from_c(c_peer_typed, run, 3)] == [
         ['msg', 'c_child', str(i)] for i in range(3)
     ]

@@ -138,24 +138,28 @@ def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
         transport.shutdown()
 
 
+def counter_refusal(tmp_path: Path, env: dict[str, str], period: str) -> list[str]:
+    """Start the counter with ``-p period:=<period>``; it must exit 1: its stderr lines."""
+    process = start_counter(tmp_path, env, '--ros-args', '-p', f'period:={period}')
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 1
+    return stderr.strip().splitlines()
+
+
 def test_config_error_from_the_node_exits_1_on_one_line(
     world_env: dict[str, str], tmp_path: Path
 ) -> None:
     """A NodeConfigError raised by the constructor prints one line and exits 1."""
-    process = start_counter(tmp_path, world_env, '--ros-args', '-p', 'period:=-1.0')
-    _, stderr = process.communicate(timeout=60)
-    assert process.returncode == 1
-    assert stderr.strip().splitlines() == ['counter.py: error: period must be positive, got -1.0']
+    assert counter_refusal(tmp_path, world_env, '-1.0') == [
+        'counter.py: error: period must be positive, got -1.0'
+    ]
 
 
 def test_parameter_type_error_exits_1_with_rclpys_text(
     world_env: dict[str, str], tmp_path: Path
 ) -> None:
     """An override of the wrong type (int for a double) is a config error, not a traceback."""
-    process = start_counter(tmp_path, world_env, '--ros-args', '-p', 'period:=1')
-    _, stderr = process.communicate(timeout=60)
-    assert process.returncode == 1
-    assert stderr.strip().splitlines() == [
+    assert counter_refusal(tmp_path, world_env, '1') == [
         "counter.py: error: Trying to set parameter 'period' to '1' of type 'INTEGER', "
         "expecting type 'DOUBLE': period"
     ]

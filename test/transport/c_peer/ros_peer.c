@@ -133,6 +133,23 @@ static void print_message (const tf2_msgs_msg_dds__TFMessage_ *msg)
   fflush (stdout);
 }
 
+// Take what `reader` holds and hand each valid sample to `on_sample`; return how many were taken.
+typedef void (*sample_fn) (const void *sample, void *context);
+
+static int take_each (dds_entity_t reader, sample_fn on_sample, void *context)
+{
+  void *samples[16] = {NULL};
+  dds_sample_info_t infos[16];
+  dds_return_t n = dds_take (reader, samples, infos, 16, 16);
+  check (n, "dds_take");
+  for (int i = 0; i < n; i++)
+    if (infos[i].valid_data)
+      on_sample (samples[i], context);
+  if (n > 0)
+    dds_return_loan (reader, samples, n);
+  return n;
+}
+
 static bool wait_for_match (dds_entity_t writer, dds_time_t deadline)
 {
   while (dds_time () < deadline)
@@ -172,6 +189,20 @@ static int publish_tf (int count, double timeout_s)
   return 0;
 }
 
+struct tf_count
+{
+  bool transient_local;  // count transforms (a latched message holds several), else messages
+  int received;
+};
+
+static void count_tf (const void *sample, void *context)
+{
+  const tf2_msgs_msg_dds__TFMessage_ *msg = sample;
+  struct tf_count *count = context;
+  print_message (msg);
+  count->received += (int) (count->transient_local ? msg->transforms._length : 1);
+}
+
 static int read_tf (const char *topic_name, bool transient_local, int count, double timeout_s)
 {
   dds_entity_t participant = make_participant ();
@@ -182,27 +213,14 @@ static int read_tf (const char *topic_name, bool transient_local, int count, dou
   dds_entity_t condition = dds_create_readcondition (reader, DDS_ANY_STATE);
   check (dds_waitset_attach (waitset, condition, 0), "dds_waitset_attach");
   dds_time_t deadline = dds_time () + (dds_duration_t) (timeout_s * 1e9);
-  int received = 0;
-  while (received < count && dds_time () < deadline)
+  struct tf_count received = {transient_local, 0};
+  while (received.received < count && dds_time () < deadline)
   {
     dds_waitset_wait_until (waitset, NULL, 0, deadline);
-    void *samples[16] = {NULL};
-    dds_sample_info_t infos[16];
-    dds_return_t n = dds_take (reader, samples, infos, 16, 16);
-    check (n, "dds_take");
-    for (int i = 0; i < n; i++)
-    {
-      if (!infos[i].valid_data)
-        continue;
-      const tf2_msgs_msg_dds__TFMessage_ *msg = samples[i];
-      print_message (msg);
-      received += (int) (transient_local ? msg->transforms._length : 1);
-    }
-    if (n > 0)
-      dds_return_loan (reader, samples, n);
+    take_each (reader, count_tf, &received);
   }
   dds_delete (participant);
-  return received >= count ? 0 : 1;
+  return received.received >= count ? 0 : 1;
 }
 
 static int publish_static (double hold_s)
@@ -224,6 +242,28 @@ static int publish_static (double hold_s)
   return 0;
 }
 
+struct node_search
+{
+  const char *name;
+  bool found;
+};
+
+static void find_node (const void *sample, void *context)
+{
+  const rmw_dds_common_msg_dds__ParticipantEntitiesInfo_ *info = sample;
+  struct node_search *search = context;
+  for (uint32_t k = 0; k < info->node_entities_info_seq._length; k++)
+  {
+    const rmw_dds_common_msg_dds__NodeEntitiesInfo_ *node =
+      &info->node_entities_info_seq._buffer[k];
+    printf (
+      "node %s %s readers=%u writers=%u\n", node->node_namespace, node->node_name,
+      node->reader_gid_seq._length, node->writer_gid_seq._length);
+    if (strcmp (node->node_name, search->name) == 0)
+      search->found = true;
+  }
+}
+
 static int discovery (const char *node_name, double timeout_s)
 {
   dds_entity_t participant = make_participant ();
@@ -231,37 +271,13 @@ static int discovery (const char *node_name, double timeout_s)
     participant, "ros_discovery_info",
     &rmw_dds_common_msg_dds__ParticipantEntitiesInfo__desc, false, true, true, 1, PEI_TYPEHASH);
   dds_time_t deadline = dds_time () + (dds_duration_t) (timeout_s * 1e9);
-  int found = 0;
-  while (!found && dds_time () < deadline)
-  {
-    void *samples[8] = {NULL};
-    dds_sample_info_t infos[8];
-    dds_return_t n = dds_take (reader, samples, infos, 8, 8);
-    check (n, "dds_take");
-    for (int i = 0; i < n; i++)
-    {
-      if (!infos[i].valid_data)
-        continue;
-      const rmw_dds_common_msg_dds__ParticipantEntitiesInfo_ *info = samples[i];
-      for (uint32_t k = 0; k < info->node_entities_info_seq._length; k++)
-      {
-        const rmw_dds_common_msg_dds__NodeEntitiesInfo_ *node =
-          &info->node_entities_info_seq._buffer[k];
-        printf (
-          "node %s %s readers=%u writers=%u\n", node->node_namespace, node->node_name,
-          node->reader_gid_seq._length, node->writer_gid_seq._length);
-        if (strcmp (node->node_name, node_name) == 0)
-          found = 1;
-      }
-    }
-    if (n > 0)
-      dds_return_loan (reader, samples, n);
-    else
+  struct node_search search = {node_name, false};
+  while (!search.found && dds_time () < deadline)
+    if (take_each (reader, find_node, &search) == 0)
       dds_sleepfor (DDS_MSECS (20));
-  }
   fflush (stdout);
   dds_delete (participant);
-  return found ? 0 : 1;
+  return search.found ? 0 : 1;
 }
 
 int main (int argc, char **argv)

@@ -24,16 +24,16 @@ robot_state_publisher runs on it as the real one does.
 
 from __future__ import annotations
 
-import os
-import shutil
-import signal
 import subprocess
 from typing import Any
 
 from conftest import executable_command
 from conftest import ProcessOutput
 from conftest import REPO_ROOT
+from conftest import run_captured
 import pytest
+from ros_world.jazzy import require_ros2_cli
+from ros_world.jazzy import running
 from tf_demo.transport import ros_args
 from tf_demo.transport.ros_args import explain_rcl_error
 from tf_demo.transport.ros_args import parse_param_value
@@ -109,14 +109,8 @@ def test_pure_scanner_refuses_a_tab_that_breaks_indentation_as_libyaml_does() ->
 
 
 def _rsp(world_env: dict[str, str], *ros_arguments: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(
-        executable_command('robot_state_publisher', '--ros-args', *ros_arguments),
-        env=world_env,
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    command = executable_command('robot_state_publisher', '--ros-args', *ros_arguments)
+    return run_captured(command, world_env, timeout=120)
 
 
 def test_robot_state_publisher_refuses_the_commented_urdf_with_advice(
@@ -173,28 +167,9 @@ def test_rclpy_init_refusal_is_a_ros_args_error_with_advice() -> None:
 @pytest.mark.rclpy_world
 def test_ros2_run_robot_state_publisher_on_panda(world_env: dict[str, str]) -> None:
     """The issue's command under ``ros2 run``: accepted, the robot initialised."""
-    if shutil.which('ros2') is None:
-        pytest.skip('the ros2 command line is not on PATH')
+    require_ros2_cli()
     command = ['ros2', 'run', 'tf_demo', 'robot_state_publisher', '--ros-args', '-p']
-    process = subprocess.Popen(
-        [*command, f'robot_description:={_panda()}'],
-        env=world_env,
-        stdin=subprocess.DEVNULL,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        start_new_session=True,
-    )
-    output = ProcessOutput(process)
-    try:
+    with running([*command, f'robot_description:={_panda()}'], world_env) as output:
         output.wait_for_line('Robot initialized', timeout=90, anywhere=True)
-        assert process.poll() is None, output.stderr
-    finally:
-        if process.poll() is None:
-            os.killpg(process.pid, signal.SIGINT)
-        try:
-            process.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-            process.wait()
+        assert output.process.poll() is None, output.stderr
     assert 'Traceback' not in '\n'.join(output.stderr)
