@@ -169,6 +169,7 @@ RELIABLE_JOINT_STATES = """robot_state_publisher:
 COUNTER = """
 import sys, threading
 from tf_demo import transport
+from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import tf2_msgs
 from tf_demo.transport.qos import HistoryPolicy, QoSProfile
 transport.init(['tf_counter'])
@@ -177,7 +178,7 @@ count = [0]
 node.create_subscription(
     tf2_msgs.TFMessage, '/tf', lambda _m: count.__setitem__(0, count[0] + 1),
     QoSProfile(history=HistoryPolicy.KEEP_ALL, depth=1000), raw=True)
-executor = transport.SingleThreadedExecutor()
+executor = SingleThreadedExecutor()
 executor.add_node(node)
 stop = threading.Event()
 def spin():

@@ -390,10 +390,11 @@ class Spinning:
 
     def __init__(self) -> None:
         from tf_demo import transport
+        from tf_demo.transport.executors import SingleThreadedExecutor
 
         self._transport = transport
         self.nodes: list[Any] = []
-        self.executor = transport.SingleThreadedExecutor()
+        self.executor = SingleThreadedExecutor()
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
 

@@ -32,6 +32,7 @@ from tf_demo.ros import TransformBroadcaster
 from tf_demo.ros import TransformListener
 from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.transport.clock import Duration
+from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import rosgraph_msgs
 from tf_demo.transport.messages import tf2_msgs
 from tf_demo.transport.parameters import Parameter
@@ -57,7 +58,7 @@ class Spinner:
     """Spins some nodes in a background executor thread for the duration of a test."""
 
     def __init__(self, *nodes: Any) -> None:
-        self.executor = transport.SingleThreadedExecutor()
+        self.executor = SingleThreadedExecutor()
         for node in nodes:
             self.executor.add_node(node)
         self._stop = threading.Event()
@@ -293,7 +294,7 @@ def test_blocking_wait_in_a_single_threaded_executor_callback_does_not_deadlock(
         outcome.append(bool(answer))
 
     node.create_timer(0.05, on_timer)
-    executor = transport.SingleThreadedExecutor()
+    executor = SingleThreadedExecutor()
     executor.add_node(node)
 
     def spin_until_answered() -> None:
@@ -334,7 +335,7 @@ def test_awaited_lookup_in_a_single_threaded_executor_resolves_and_times_out(
             results['timeout'] = error
 
     node.create_timer(0.05, on_timer)
-    executor = transport.SingleThreadedExecutor()
+    executor = SingleThreadedExecutor()
     executor.add_node(node)
     publisher = transport.create_node('late_pub')
     broadcaster = StaticTransformBroadcaster(publisher)

@@ -98,6 +98,7 @@ def test_a_subscription_logs_a_flood_of_undecodable_samples_once(
 ) -> None:
     """2,000 undecodable samples from one writer: one error line (then counts); data flows."""
     from tf_demo import transport
+    from tf_demo.transport.executors import SingleThreadedExecutor
     from tf_demo.transport.messages import tf2_msgs
     from tf_demo.transport.qos import QoSProfile
 
@@ -108,7 +109,7 @@ def test_a_subscription_logs_a_flood_of_undecodable_samples_once(
     publisher = transport.create_node('garbage').create_publisher(
         tf2_msgs.TFMessage, '/flood', QoSProfile(depth=3000)
     )
-    executor = transport.SingleThreadedExecutor()
+    executor = SingleThreadedExecutor()
     executor.add_node(node)
     try:
         assert spin_until(executor, lambda: publisher.get_subscription_count() >= 1)

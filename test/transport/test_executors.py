@@ -38,8 +38,12 @@ from tf_demo.ros import Buffer
 from tf_demo.ros import StaticTransformBroadcaster
 from tf_demo.ros import TransformListener
 from tf_demo.ros.node_helpers import make_transform_stamped
+from tf_demo.transport.callback_groups import MutuallyExclusiveCallbackGroup
+from tf_demo.transport.callback_groups import ReentrantCallbackGroup
 from tf_demo.transport.clock import Duration
 from tf_demo.transport.clock import Time
+from tf_demo.transport.executors import MultiThreadedExecutor
+from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import std_msgs
 
 pytestmark = pytest.mark.dds
@@ -68,7 +72,7 @@ def executors(ros: None) -> Iterator[list[Any]]:
 
 
 def single_threaded(executors: list[Any], *nodes: Any) -> Any:
-    executor = transport.SingleThreadedExecutor()
+    executor = SingleThreadedExecutor()
     executors.append(executor)
     for node in nodes:
         executor.add_node(node)
@@ -76,7 +80,7 @@ def single_threaded(executors: list[Any], *nodes: Any) -> Any:
 
 
 def multi_threaded(executors: list[Any], *nodes: Any, num_threads: int = 2) -> Any:
-    executor = transport.MultiThreadedExecutor(num_threads=num_threads)
+    executor = MultiThreadedExecutor(num_threads=num_threads)
     executors.append(executor)
     for node in nodes:
         executor.add_node(node)
@@ -86,14 +90,14 @@ def multi_threaded(executors: list[Any], *nodes: Any, num_threads: int = 2) -> A
 def test_entities_join_their_callback_group_with_rclpy_methods(ros: None) -> None:
     """create_* put entities in the given group or the node's mutually exclusive default."""
     node = transport.create_node('grouped')
-    reentrant = transport.ReentrantCallbackGroup()
+    reentrant = ReentrantCallbackGroup()
     subscription = node.create_subscription(
         std_msgs.String, 'grouped_topic', lambda _msg: None, 10, callback_group=reentrant
     )
     timer = node.create_timer(60.0, lambda: None)
     other_timer = node.create_timer(60.0, lambda: None)
     default = node.default_callback_group
-    assert isinstance(default, transport.MutuallyExclusiveCallbackGroup)
+    assert isinstance(default, MutuallyExclusiveCallbackGroup)
     assert subscription.callback_group is reentrant
     assert reentrant.has_entity(subscription)
     assert not default.has_entity(subscription)
@@ -114,7 +118,7 @@ def test_entities_join_their_callback_group_with_rclpy_methods(ros: None) -> Non
     reentrant.ending_execution(subscription)
     reentrant.ending_execution(subscription)
 
-    mine = transport.MutuallyExclusiveCallbackGroup()
+    mine = MutuallyExclusiveCallbackGroup()
     late_timer = node.create_timer(60.0, lambda: None, callback_group=mine)
     assert mine.has_entity(late_timer)
     assert not default.has_entity(late_timer)
@@ -155,7 +159,7 @@ def test_multi_threaded_reentrant_group_runs_two_callbacks_at_once(
 ) -> None:
     """Two timers of a reentrant group both pass a two-party barrier: they run concurrently."""
     node = transport.create_node('reentrant_node')
-    group = transport.ReentrantCallbackGroup()
+    group = ReentrantCallbackGroup()
     barrier = threading.Barrier(2)
     outcomes: dict[str, bool] = {}
     timers: dict[str, Any] = {}
@@ -190,7 +194,7 @@ def test_multi_threaded_mutually_exclusive_group_never_overlaps(
 ) -> None:
     """Two always-due timers of one mutually exclusive group both run, never at the same time."""
     node = transport.create_node('exclusive_node')
-    group = transport.MutuallyExclusiveCallbackGroup() if group_kind == 'explicit' else None
+    group = MutuallyExclusiveCallbackGroup() if group_kind == 'explicit' else None
     runs_each = 2
     lock = threading.Lock()
     state = {'active': 0, 'most_active': 0}
@@ -242,7 +246,7 @@ def test_multi_threaded_groups_do_not_hold_each_other_back(executors: list[Any])
         'other_group',
         lambda _msg: message_seen.set(),
         10,
-        callback_group=transport.MutuallyExclusiveCallbackGroup(),
+        callback_group=MutuallyExclusiveCallbackGroup(),
     )
     talker = transport.create_node('other_group_talker')
     publisher = talker.create_publisher(std_msgs.String, 'other_group', 10)
@@ -298,7 +302,7 @@ def test_tf2_guide_blocking_lookup_in_a_reentrant_timer_of_a_multi_threaded_exec
             return
         found.append(transform)
 
-    node.create_timer(0.5, on_timer, callback_group=transport.ReentrantCallbackGroup())
+    node.create_timer(0.5, on_timer, callback_group=ReentrantCallbackGroup())
     broadcaster_node = transport.create_node('turtle_static_broadcaster')
     broadcaster = StaticTransformBroadcaster(broadcaster_node)
     executor = multi_threaded(executors, node, num_threads=4)
@@ -335,7 +339,7 @@ def test_multi_threaded_shutdown_waits_for_running_callbacks(executors: list[Any
         finished.set()
 
     timer = node.create_timer(0.05, on_timer)
-    executor = transport.MultiThreadedExecutor(num_threads=2)
+    executor = MultiThreadedExecutor(num_threads=2)
     executor.add_node(node)
     assert spin_until(executor, started.is_set)
     assert executor.shutdown(timeout_sec=0) is False

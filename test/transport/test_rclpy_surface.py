@@ -1285,7 +1285,8 @@ def test_tutorial_nodes_publish_rclpy_valid_messages(published: list[Any], tmp_p
 
 STOPPED_WHILE_STARTING = """
 import os, signal, sys
-from tf_demo.transport import Node, run_node
+from tf_demo.transport import run_node
+from tf_demo.transport.node import Node
 
 class Slow(Node):
     def __init__(self):

@@ -24,6 +24,7 @@ import pytest
 from tf_demo import transport
 from tf_demo.transport.clock import ClockType
 from tf_demo.transport.clock import Time
+from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import builtin_interfaces
 from tf_demo.transport.messages import rosgraph_msgs
 from tf_demo.transport.messages import std_msgs
@@ -54,7 +55,7 @@ def test_clock_topic_drives_now_when_use_sim_time_is_set(world_env: dict[str, st
             'sim_node', cli_args=['--ros-args', '-p', 'use_sim_time:=true']
         )
         assert node.get_parameter('use_sim_time').value is True
-        executor = transport.SingleThreadedExecutor()
+        executor = SingleThreadedExecutor()
         executor.add_node(simulator)
         executor.add_node(node)
         clock = node.get_clock()
@@ -91,7 +92,7 @@ def test_without_use_sim_time_clock_messages_are_ignored(world_env: dict[str, st
         clock_publisher = simulator.create_publisher(rosgraph_msgs.Clock, '/clock', 10)
         node = transport.create_node('wall_node')
         assert node.get_parameter('use_sim_time').value is False
-        executor = transport.SingleThreadedExecutor()
+        executor = SingleThreadedExecutor()
         executor.add_node(simulator)
         executor.add_node(node)
         for _ in range(10):
@@ -104,7 +105,8 @@ def test_without_use_sim_time_clock_messages_are_ignored(world_env: dict[str, st
 
 STAMP_REPORTER = """
 import sys
-from tf_demo.transport import Node, run_node
+from tf_demo.transport import run_node
+from tf_demo.transport.node import Node
 from tf_demo.transport.messages import std_msgs
 
 
@@ -143,7 +145,7 @@ def test_node_process_with_use_sim_time_reports_clock_topic_time(
         simulator.create_subscription(
             std_msgs.String, 'stamps', lambda msg: stamps.append(int(msg.data)), 100
         )
-        executor = transport.SingleThreadedExecutor()
+        executor = SingleThreadedExecutor()
         executor.add_node(simulator)
         sim_ns = 1000 * 10**9
 

@@ -139,7 +139,7 @@ class TransformListener:
             self._start_spin_thread()
 
     def _start_spin_thread(self) -> None:
-        from tf_demo.transport import SingleThreadedExecutor
+        from tf_demo.transport.executors import SingleThreadedExecutor
 
         self._executor = SingleThreadedExecutor()
         self._executor.add_node(self._private_node)
