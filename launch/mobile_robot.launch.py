@@ -24,76 +24,42 @@ stand-in for odometry).
 """
 
 import os
+import sys
 
-from ament_index_python.packages import get_package_share_directory
-from ament_index_python.packages import PackageNotFoundError
-from launch.actions import DeclareLaunchArgument
-from launch.conditions import IfCondition
 from launch.substitutions import Command
 from launch.substitutions import LaunchConfiguration
-from launch_ros.actions import Node
 from launch_ros.parameter_descriptions import ParameterValue
 
 from launch import LaunchDescription
 
-
-def rviz_installed() -> bool:
-    """Whether rviz2 is installed (it is not part of every ROS 2 installation)."""
-    try:
-        get_package_share_directory('rviz2')
-    except PackageNotFoundError:
-        return False
-    return True
+sys.path.insert(0, os.path.dirname(__file__))  # tf_demo_launch is installed beside this file
+from tf_demo_launch import radius_argument
+from tf_demo_launch import rviz
+from tf_demo_launch import rviz_argument
+from tf_demo_launch import share_path
+from tf_demo_launch import tf_demo_node
 
 
 def generate_launch_description() -> LaunchDescription:
-    share = get_package_share_directory('tf_demo')
-    xacro_file = os.path.join(share, 'urdf', 'mobile_robot.urdf.xacro')
-    rviz_config = os.path.join(share, 'config', 'tf_demo.rviz')
+    xacro_file = share_path('urdf', 'mobile_robot.urdf.xacro')
     robot_description = ParameterValue(Command(['xacro ', xacro_file]), value_type=str)
     return LaunchDescription(
         [
-            DeclareLaunchArgument(
-                'rviz',
-                default_value=str(rviz_installed()).lower(),
-                description='Start rviz2 (default: true where rviz2 is installed)',
-            ),
-            DeclareLaunchArgument(
-                'radius', default_value='1.0', description='Radius of the circle (m)'
-            ),
-            Node(
-                package='tf_demo',
+            rviz_argument(),
+            radius_argument(),
+            tf_demo_node(
                 executable='robot_state_publisher',
                 name='robot_state_publisher',
-                output='screen',
-                parameters=[{'robot_description': robot_description}],
+                robot_description=robot_description,
             ),
-            Node(
-                package='tf_demo',
-                executable='joint_state_publisher',
-                name='joint_state_publisher',
-                output='screen',
-            ),
-            Node(
-                package='tf_demo',
+            tf_demo_node(executable='joint_state_publisher', name='joint_state_publisher'),
+            tf_demo_node(
                 executable='dynamic_tf_pub',
                 name='odometry',
-                output='screen',
-                parameters=[
-                    {
-                        'parent_frame': 'odom',
-                        'child_frame': 'base_footprint',
-                        'radius': LaunchConfiguration('radius'),
-                    }
-                ],
+                parent_frame='odom',
+                child_frame='base_footprint',
+                radius=LaunchConfiguration('radius'),
             ),
-            Node(
-                package='rviz2',
-                executable='rviz2',
-                name='rviz2',
-                arguments=['-d', rviz_config, '-f', 'odom'],
-                condition=IfCondition(LaunchConfiguration('rviz')),
-                output='screen',
-            ),
+            rviz('-f', 'odom'),
         ]
     )

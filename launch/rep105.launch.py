@@ -23,72 +23,40 @@ circle (stand-in for odometry) and the robot's static frames come from
 """
 
 import os
-
-from ament_index_python.packages import get_package_share_directory
-from ament_index_python.packages import PackageNotFoundError
-from launch.actions import DeclareLaunchArgument
-from launch.conditions import IfCondition
-from launch.substitutions import LaunchConfiguration
-from launch_ros.actions import Node
+import sys
 
 from launch import LaunchDescription
 
-
-def rviz_installed() -> bool:
-    """Whether rviz2 is installed (it is not part of every ROS 2 installation)."""
-    try:
-        get_package_share_directory('rviz2')
-    except PackageNotFoundError:
-        return False
-    return True
+sys.path.insert(0, os.path.dirname(__file__))  # tf_demo_launch is installed beside this file
+from tf_demo_launch import rviz
+from tf_demo_launch import rviz_argument
+from tf_demo_launch import share_path
+from tf_demo_launch import tf_demo_node
 
 
 def generate_launch_description() -> LaunchDescription:
-    share = get_package_share_directory('tf_demo')
-    transforms_file = os.path.join(share, 'config', 'rep105_static_transforms.yaml')
-    rviz_config = os.path.join(share, 'config', 'tf_demo.rviz')
     return LaunchDescription(
         [
-            DeclareLaunchArgument(
-                'rviz',
-                default_value=str(rviz_installed()).lower(),
-                description='Start rviz2 (default: true where rviz2 is installed)',
-            ),
-            Node(
-                package='tf_demo',
+            rviz_argument(),
+            tf_demo_node(
                 executable='static_tf_pub',
                 name='robot_static_frames',
-                output='screen',
-                parameters=[{'transforms_file': transforms_file}],
+                transforms_file=share_path('config', 'rep105_static_transforms.yaml'),
             ),
-            Node(
-                package='tf_demo',
+            tf_demo_node(
                 executable='static_tf_pub',
                 name='map_to_odom',
-                output='screen',
-                parameters=[
-                    {
-                        'parent_frame': 'map',
-                        'child_frame': 'odom',
-                        'translation': [0.0, 0.0, 0.0],
-                        'rotation': [0.0, 0.0, 0.0],
-                    }
-                ],
+                parent_frame='map',
+                child_frame='odom',
+                translation=[0.0, 0.0, 0.0],
+                rotation=[0.0, 0.0, 0.0],
             ),
-            Node(
-                package='tf_demo',
+            tf_demo_node(
                 executable='dynamic_tf_pub',
                 name='odometry',
-                output='screen',
-                parameters=[{'parent_frame': 'odom', 'child_frame': 'base_footprint'}],
+                parent_frame='odom',
+                child_frame='base_footprint',
             ),
-            Node(
-                package='rviz2',
-                executable='rviz2',
-                name='rviz2',
-                arguments=['-d', rviz_config, '-f', 'map'],
-                condition=IfCondition(LaunchConfiguration('rviz')),
-                output='screen',
-            ),
+            rviz('-f', 'map'),
         ]
     )

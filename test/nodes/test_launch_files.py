@@ -23,36 +23,65 @@ import pytest
 import yaml
 
 REPO = Path(__file__).resolve().parents[2]
+#: The module the launch files share (launch/tf_demo_launch.py), installed beside them.
+SHARED = 'tf_demo_launch'
 
 
-@pytest.mark.parametrize('name', ['tf_demo.launch.py', 'rep105.launch.py'])
-def test_launch_files_parse_and_define_generate_launch_description(name: str) -> None:
-    """The launch files are valid Python with generate_launch_description() (run inside ROS)."""
-    tree = ast.parse((REPO / 'launch' / name).read_text(encoding='utf-8'))
-    functions = {n.name for n in tree.body if isinstance(n, ast.FunctionDef)}
-    assert 'generate_launch_description' in functions
-    executables = {
-        kw.value.value
-        for node in ast.walk(tree)
-        if isinstance(node, ast.Call)
-        for kw in node.keywords
-        if kw.arg == 'executable' and isinstance(kw.value, ast.Constant)
-    }
-    assert {'static_tf_pub', 'dynamic_tf_pub', 'rviz2'} <= executables
+def parsed(name: str) -> ast.Module:
+    return ast.parse((REPO / 'launch' / name).read_text(encoding='utf-8'))
 
 
-def test_mobile_robot_launch_runs_rsp_on_the_xacro_with_jsp_and_odometry() -> None:
-    """mobile_robot.launch.py: RSP on urdf/mobile_robot.urdf.xacro, JSP, odom -> base_footprint."""
-    tree = ast.parse((REPO / 'launch' / 'mobile_robot.launch.py').read_text(encoding='utf-8'))
-    functions = {n.name for n in tree.body if isinstance(n, ast.FunctionDef)}
-    assert 'generate_launch_description' in functions
-    keywords = {
+def constant_keywords(tree: ast.AST) -> set[tuple[str | None, object]]:
+    """(keyword, value) of every call in ``tree`` given a constant keyword argument."""
+    return {
         (kw.arg, kw.value.value)
         for node in ast.walk(tree)
         if isinstance(node, ast.Call)
         for kw in node.keywords
         if isinstance(kw.value, ast.Constant)
     }
+
+
+def launched_keywords(tree: ast.Module) -> set[tuple[str | None, object]]:
+    """The constant keywords of a launch file's calls, and of the shared functions it calls."""
+    shared = {
+        function.name: function
+        for function in parsed(f'{SHARED}.py').body
+        if isinstance(function, ast.FunctionDef)
+    }
+    imported = {
+        alias.name
+        for node in tree.body
+        if isinstance(node, ast.ImportFrom) and node.module == SHARED
+        for alias in node.names
+    }
+    called = {
+        node.func.id
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+    }
+    found = constant_keywords(tree)
+    for name in called & imported:
+        found |= constant_keywords(shared[name])
+    return found
+
+
+@pytest.mark.parametrize('name', ['tf_demo.launch.py', 'rep105.launch.py'])
+def test_launch_files_parse_and_define_generate_launch_description(name: str) -> None:
+    """The launch files are valid Python with generate_launch_description() (run inside ROS)."""
+    tree = parsed(name)
+    functions = {n.name for n in tree.body if isinstance(n, ast.FunctionDef)}
+    assert 'generate_launch_description' in functions
+    executables = {value for arg, value in launched_keywords(tree) if arg == 'executable'}
+    assert {'static_tf_pub', 'dynamic_tf_pub', 'rviz2'} <= executables
+
+
+def test_mobile_robot_launch_runs_rsp_on_the_xacro_with_jsp_and_odometry() -> None:
+    """mobile_robot.launch.py: RSP on urdf/mobile_robot.urdf.xacro, JSP, odom -> base_footprint."""
+    tree = parsed('mobile_robot.launch.py')
+    functions = {n.name for n in tree.body if isinstance(n, ast.FunctionDef)}
+    assert 'generate_launch_description' in functions
+    keywords = launched_keywords(tree)
     executables = {value for arg, value in keywords if arg == 'executable'}
     assert {'robot_state_publisher', 'joint_state_publisher', 'dynamic_tf_pub'} <= executables
     constants = {n.value for n in ast.walk(tree) if isinstance(n, ast.Constant)}
