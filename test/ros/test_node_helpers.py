@@ -19,6 +19,8 @@ from __future__ import annotations
 import math
 import re
 
+from conftest import executable_command
+from conftest import run_captured
 import pytest
 from tf_demo.ros.node_helpers import NodeConfigError
 
@@ -50,19 +52,8 @@ def test_a_node_given_a_timer_it_cannot_run_exits_1_with_one_line(
     node: str, world_env: dict[str, str]
 ) -> None:
     """``-p rate:=1e-300`` (or ``period:=1e300``): exit 1, one line naming it, no traceback."""
-    import subprocess
-
-    from conftest import executable_command
-
     parameter = 'period:=1e300' if node == 'tf_listener' else 'rate:=1e-300'
-    completed = subprocess.run(
-        executable_command(node, '--ros-args', '-p', parameter),
-        env=world_env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    completed = run_captured(executable_command(node, '--ros-args', '-p', parameter), world_env)
     assert completed.returncode == 1, completed.stderr
     assert 'Traceback' not in completed.stderr, completed.stderr
     assert completed.stderr.strip().count('\n') == 0, completed.stderr
