@@ -58,6 +58,26 @@ def start(peers: list[Peer], env: dict[str, str], *args: str) -> Peer:
     return peer
 
 
+LATCHED = ('--durability', 'transient_local')
+
+
+def latch(peers: list[Peer], env: dict[str, str], topic: str, frame: str, *args: str) -> None:
+    """A publisher of one message on ``topic`` (depth 1, transient local), held for 30 s."""
+    start(
+        peers, env, 'pub', '--topic', topic, '--frame', frame, *LATCHED, '--depth', '1',
+        '--hold', '30', *args,
+    ).wait_for_line('sent 1')  # fmt: skip
+
+
+def late_subscriber(peers: list[Peer], env: dict[str, str], topic: str, count: int) -> Peer:
+    """A transient local subscription of ``count`` messages on ``topic``, finished."""
+    subscriber = start(
+        peers, env, 'sub', '--topic', topic, *LATCHED, '--count', str(count), '--timeout', '20'
+    )
+    assert subscriber.finish() == 0
+    return subscriber
+
+
 def received_x(peer: Peer) -> list[float]:
     return [float(line.split()[2]) for line in peer.stdout if line.startswith('msg ')]
 
@@ -98,16 +118,8 @@ def test_shutdown_right_after_a_burst_still_delivers_it(dds_env, peers):
 
 def test_transient_local_late_joiner_gets_latched_message(dds_env, peers):
     """A TRANSIENT_LOCAL subscription started after the publish still receives the message."""
-    publisher = start(
-        peers, dds_env, 'pub', '--topic', '/latched', '--frame', 'latched_frame',
-        '--durability', 'transient_local', '--depth', '1', '--hold', '30',
-    )  # fmt: skip
-    publisher.wait_for_line('sent 1')
-    subscriber = start(
-        peers, dds_env, 'sub', '--topic', '/latched', '--durability', 'transient_local',
-        '--count', '1', '--timeout', '20',
-    )  # fmt: skip
-    assert subscriber.finish() == 0
+    latch(peers, dds_env, '/latched', 'latched_frame')
+    subscriber = late_subscriber(peers, dds_env, '/latched', 1)
     assert subscriber.stdout[-1] == 'done 1'
     assert 'msg latched_frame 0 world 0 0 0 0 0 1' in subscriber.stdout
 
@@ -115,16 +127,8 @@ def test_transient_local_late_joiner_gets_latched_message(dds_env, peers):
 def test_two_tf_static_publishers_both_reach_a_late_joiner(dds_env, peers):
     """Two latched /tf_static publishers (depth 1 each) both reach a depth-100 late listener."""
     for frame in ('static_a', 'static_b'):
-        publisher = start(
-            peers, dds_env, 'pub', '--name', f'pub_{frame}', '--topic', '/tf_static',
-            '--frame', frame, '--durability', 'transient_local', '--depth', '1', '--hold', '30',
-        )  # fmt: skip
-        publisher.wait_for_line('sent 1')
-    subscriber = start(
-        peers, dds_env, 'sub', '--topic', '/tf_static', '--durability', 'transient_local',
-        '--count', '2', '--timeout', '20',
-    )  # fmt: skip
-    assert subscriber.finish() == 0
+        latch(peers, dds_env, '/tf_static', frame, '--name', f'pub_{frame}')
+    subscriber = late_subscriber(peers, dds_env, '/tf_static', 2)
     assert sorted(line.split()[1] for line in subscriber.stdout if line.startswith('msg ')) == [
         'static_a',
         'static_b',
@@ -134,8 +138,8 @@ def test_two_tf_static_publishers_both_reach_a_late_joiner(dds_env, peers):
 def test_incompatible_qos_warns_on_both_sides_and_delivers_nothing(dds_env, peers):
     """A TRANSIENT_LOCAL subscription and a VOLATILE publisher warn like rclpy and never match."""
     incompatible = start(
-        peers, dds_env, 'sub', '--name', 'strict', '--topic', '/x',
-        '--durability', 'transient_local', '--count', '1000000', '--timeout', '4',
+        peers, dds_env, 'sub', '--name', 'strict', '--topic', '/x', *LATCHED,
+        '--count', '1000000', '--timeout', '4',
     )  # fmt: skip
     compatible = start(
         peers, dds_env, 'sub', '--name', 'lenient', '--topic', '/x', '--count', '1000000',
