@@ -116,3 +116,44 @@ def test_run_node_reports_a_bad_backend_choice_without_traceback() -> None:
     assert completed.returncode == 1
     assert "x: error: TF_DEMO_BACKEND='zenoh' is not a known backend" in completed.stderr
     assert 'Traceback' not in completed.stderr
+
+
+# --------------------------------------------------------------------------------------------
+# With an importable rclpy.
+
+
+@pytest.fixture
+def importable_rclpy(tmp_path: Path) -> Path:
+    """A directory holding a package named rclpy that imports (its import is recorded)."""
+    package = tmp_path / 'rclpy'
+    package.mkdir()
+    (package / '__init__.py').write_text('IMPORTED = True\n', encoding='utf-8')
+    return tmp_path
+
+
+def test_the_backend_is_resolved_once_per_process(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Changing TF_DEMO_BACKEND after the first answer does not switch worlds mid-process."""
+    from tf_demo.transport import backend
+
+    monkeypatch.setenv('TF_DEMO_BACKEND', 'dds')
+    backend.backend_name.cache_clear()
+    try:
+        assert backend.backend_name() == 'dds'
+        monkeypatch.setenv('TF_DEMO_BACKEND', 'zenoh')
+        assert backend.backend_name() == 'dds'
+        assert backend.rclpy_world() is False
+    finally:
+        backend.backend_name.cache_clear()
+
+
+@pytest.mark.standalone  # runs the DDS backend in a child process
+def test_explicit_dds_never_imports_an_installed_rclpy(importable_rclpy: Path) -> None:
+    """TF_DEMO_BACKEND=dds keeps rclpy (and its signal handlers) out of the process."""
+    code = (
+        'import sys; import tf_demo.transport.messages, tf_demo.transport.qos, '
+        'tf_demo.transport.clock, tf_demo.transport as t; '
+        "print(t.backend_name(), 'rclpy' in sys.modules, t.Node.__module__)"
+    )
+    completed = run_probe(code, ' DDS ', importable_rclpy)
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.split() == ['dds', 'False', 'tf_demo.transport.dds_backend']

@@ -32,8 +32,9 @@ loggers, module functions) offers the same signatures, (2) that every call site 
 ``tf_demo/ros``, ``tf_demo/nodes`` and ``tf_demo/cli`` binds to rclpy's signatures and never logs
 at two severities from one call site, (3) that the messages our node code builds and publishes
 would pass rclpy's field checks, (4) that ``rclpy_backend`` stays a pure pass-through that
-replaces every rclpy concept of the node API, (5) the backend selection rules, and (6) standalone
-behaviour that rclpy specifies (callback arity, ``publish`` types, ``try_shutdown``, stop signals).
+replaces every rclpy concept of the node API, and (5) standalone behaviour that rclpy specifies
+(callback arity, ``publish`` types, ``try_shutdown``, stop signals). The backend selection rules
+are tested in test_backend.py.
 """
 
 from __future__ import annotations
@@ -51,12 +52,12 @@ import inspect
 import math
 import os
 from pathlib import Path
-import subprocess
 import sys
 import time
 from typing import Any
 
 from conftest import HAVE_CYCLONEDDS
+from conftest import run_captured
 from conftest import STANDALONE_ONLY
 from conftest import WORLD
 import numpy as np
@@ -1031,63 +1032,6 @@ def test_rclpy_world_replaces_every_rclpy_concept_of_the_node_api(module_name: s
 
 
 # --------------------------------------------------------------------------------------------
-# Backend selection with an importable rclpy.
-
-
-def _probe(code: str, backend: str | None, extra_path: Path) -> subprocess.CompletedProcess[str]:
-    env = dict(os.environ)
-    env.pop('TF_DEMO_BACKEND', None)
-    if backend is not None:
-        env['TF_DEMO_BACKEND'] = backend
-    env['PYTHONPATH'] = os.pathsep.join([str(REPO_ROOT), str(extra_path)])
-    return subprocess.run(
-        [sys.executable, '-c', code],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
-
-
-@pytest.fixture
-def importable_rclpy(tmp_path: Path) -> Path:
-    """A directory holding a package named rclpy that imports (its import is recorded)."""
-    package = tmp_path / 'rclpy'
-    package.mkdir()
-    (package / '__init__.py').write_text('IMPORTED = True\n', encoding='utf-8')
-    return tmp_path
-
-
-def test_the_backend_is_resolved_once_per_process(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Changing TF_DEMO_BACKEND after the first answer does not switch worlds mid-process."""
-    from tf_demo.transport import backend
-
-    monkeypatch.setenv('TF_DEMO_BACKEND', 'dds')
-    backend.backend_name.cache_clear()
-    try:
-        assert backend.backend_name() == 'dds'
-        monkeypatch.setenv('TF_DEMO_BACKEND', 'zenoh')
-        assert backend.backend_name() == 'dds'
-        assert backend.rclpy_world() is False
-    finally:
-        backend.backend_name.cache_clear()
-
-
-@pytest.mark.standalone  # runs the DDS backend in a child process
-def test_explicit_dds_never_imports_an_installed_rclpy(importable_rclpy: Path) -> None:
-    """TF_DEMO_BACKEND=dds keeps rclpy (and its signal handlers) out of the process."""
-    code = (
-        'import sys; import tf_demo.transport.messages, tf_demo.transport.qos, '
-        'tf_demo.transport.clock, tf_demo.transport as t; '
-        "print(t.backend_name(), 'rclpy' in sys.modules, t.Node.__module__)"
-    )
-    completed = _probe(code, ' DDS ', importable_rclpy)
-    assert completed.returncode == 0, completed.stderr
-    assert completed.stdout.split() == ['dds', 'False', 'tf_demo.transport.dds_backend']
-
-
-# --------------------------------------------------------------------------------------------
 # Standalone behaviour where rclpy's is specified (in-process DDS on the test's domain).
 
 
@@ -1319,16 +1263,9 @@ def test_a_stop_signal_while_the_node_starts_ends_cleanly(
     script = tmp_path / 'slow.py'
     text = STOPPED_WHILE_STARTING.replace('{signal_name}', signal_name)
     script.write_text(text.replace('{before}', str(before)), 'utf-8')
-    completed = subprocess.run(
-        [sys.executable, str(script)],
-        env={
-            **world_env,
-            'PYTHONPATH': os.pathsep.join([str(REPO_ROOT), world_env.get('PYTHONPATH', '')]),
-        },
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
+    python_path = os.pathsep.join([str(REPO_ROOT), world_env.get('PYTHONPATH', '')])
+    completed = run_captured(
+        [sys.executable, str(script)], {**world_env, 'PYTHONPATH': python_path}
     )
     assert completed.returncode == 0, completed.stderr
     assert 'Traceback' not in completed.stderr
