@@ -22,6 +22,7 @@ import time
 
 import pytest
 from tf_demo import transport
+from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import std_msgs
 from tf_demo.transport.qos import QoSProfile
 
@@ -29,7 +30,8 @@ pytestmark = pytest.mark.dds
 
 COUNTER_NODE = """
 import sys
-from tf_demo.transport import Node, NodeConfigError, run_node
+from tf_demo.transport import NodeConfigError, run_node
+from tf_demo.transport.node import Node
 from tf_demo.transport.messages import std_msgs
 
 
@@ -107,7 +109,7 @@ def test_signal_stops_node_with_exit_0_and_flushes_its_publisher(
             lambda msg: received.append(int(msg.data)),
             QoSProfile(depth=1000),
         )
-        executor = transport.SingleThreadedExecutor()
+        executor = SingleThreadedExecutor()
         executor.add_node(listener)
         process = start_counter(tmp_path, world_env)
         try:

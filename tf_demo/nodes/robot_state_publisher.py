@@ -70,7 +70,6 @@ __all__ = [
     'JointStateThrottle',
     'RobotDescriptionError',
     'RobotStatePublisher',
-    'TfMessageEncoder',
     'check_publish_frequency',
     'joint_state_problem',
     'main',
@@ -282,7 +281,6 @@ class RobotStatePublisher(Node):
         self._throttle = JointStateThrottle()
         self._dropped_log = DroppedMessageLog()
         self._encoder = TfMessageEncoder(self._frame_prefix)
-        self._raw_tf = True
         self._static: dict[str, Any] = {}
         self._tf_pub = self.create_publisher(
             tf2_msgs.TFMessage,
@@ -410,7 +408,7 @@ class RobotStatePublisher(Node):
             text = f'Robot state publisher ignored a JointState message: {error}'
             self._dropped('non-finite', 30, text)
             return
-        self._publish_tf(transforms, stamp, sec, nanosec)
+        self._publish_tf(transforms, sec, nanosec)
         self._throttle.record(names, stamp_ns)
 
     def _dropped(self, kind: str, level: int, text: str) -> None:
@@ -423,24 +421,15 @@ class RobotStatePublisher(Node):
         else:
             self.get_logger().error(line)
 
-    def _publish_tf(
-        self, transforms: list[JointTransform], stamp: Any, sec: int, nanosec: int
-    ) -> None:
-        if self._raw_tf:
-            try:
-                self._tf_pub.publish(self._encoder.encode(transforms, sec, nanosec))
-                return
-            except TypeError:
-                self._raw_tf = False  # this backend only publishes message objects
-        prefix = self._frame_prefix
-        self._tf_pub.publish(
-            tf2_msgs.TFMessage(
-                transforms=[
-                    _transform_stamped(geometry_msgs, stamp, (prefix + p, prefix + c, t, q))
-                    for p, c, t, q in transforms
-                ]
-            )
-        )
+    def _publish_tf(self, transforms: list[JointTransform], sec: int, nanosec: int) -> None:
+        """
+        Publish the moving joints' transforms as one serialized TFMessage.
+
+        Both worlds' publishers take CDR bytes as they are (rclpy's ``Publisher.publish``
+        hands ``bytes`` to ``publish_raw``; the standalone writer writes them), so no
+        message objects are built on the hot path.
+        """
+        self._tf_pub.publish(self._encoder.encode(transforms, sec, nanosec))
 
 
 def _copy_qos(profile: Any) -> Any:

@@ -407,3 +407,7 @@ class DdsExecutor:
 
 class SingleThreadedExecutor(DdsExecutor):
     """rclpy's ``SingleThreadedExecutor``: every callback runs in the spinning thread."""
+
+
+Executor = DdsExecutor
+"""rclpy's name for the executors' base class."""
