@@ -34,11 +34,13 @@ from array import array
 from collections.abc import Callable
 from struct import Struct
 import sys
+from types import FunctionType
 from typing import Any
 from typing import Literal
 
 import numpy
 from tf_demo.msgs._message import blank_instance_maker
+from tf_demo.msgs._message import Message
 from tf_demo.msgs._message import message_class
 from tf_demo.msgs._schema import FieldSpec
 from tf_demo.msgs._schema import MessageSpec
@@ -50,8 +52,14 @@ _MAX_ALIGN = 8
 ZEROS = tuple(bytes(n) for n in range(_MAX_ALIGN))
 
 Endian = Literal['<', '>']
+#: Encodes a message of one type, one of ours or rclpy's (its fields read by name): no static
+#: type says which type an encoder takes, hence ``Any``.
 Encoder = Callable[[Any], bytes]
-Decoder = Callable[[bytes, int], tuple[Any, int]]
+Decoder = Callable[[bytes, int], tuple[Message, int]]
+#: What ``struct`` unpacks: ints, floats and bytes in the order of the format (typeshed: Any).
+StructValues = tuple[Any, ...]
+#: A string's compiled struct: its ``unpack_from`` and the size it reads.
+DynamicEntry = tuple[Callable[[bytes, int], StructValues], int]
 
 
 class Malformed(Exception):  # noqa: N818 - internal signal, never leaves tf_demo.msgs
@@ -73,39 +81,34 @@ Item = tuple[str, int, int]
 
 class DynamicStructs:
     """
-    The structs of one string followed by a run of primitives, by string length and position.
+    The structs that read one string and a run of primitives after it, by length and position.
 
     Where the padding after a string goes depends on the string's length and on where it starts
-    (modulo 8), so the generated code looks the compiled struct up by ``length << 3 | pos & 7``
-    and asks :meth:`make` for the ones it has not seen. A decoder's struct reads the characters,
-    the NUL (checked by the caller) and the run; an encoder's writes the bytes, a NUL and the run.
+    (modulo 8), so the generated decoder looks the compiled struct up by ``length << 3 | pos & 7``
+    and asks :meth:`make` for the ones it has not seen. A struct reads the characters, the NUL
+    (checked by the caller) and the run.
     """
 
-    def __init__(self, endian: Endian, items: list[Item], *, decode: bool) -> None:
+    def __init__(self, endian: Endian, items: list[Item]) -> None:
         self.endian = endian
         self.items = tuple(items)
-        self.decode = decode
-        self.cache: dict[int, Any] = {}
+        self.cache: dict[int, DynamicEntry] = {}
 
-    def make(self, length: int, pos: int) -> Any:
+    def make(self, length: int, pos: int) -> DynamicEntry:
         """
-        Compile, cache and return the entry for a string of ``length`` starting at ``pos``.
+        Compile, cache and return ``(unpack_from, size)`` for a string starting at ``pos``.
 
-        ``length`` is the CDR length (NUL included) for a decoder, the byte count for an
-        encoder. A decoder's entry is ``(unpack_from, size)``, an encoder's the ``pack``.
+        ``length`` is the string's CDR length (its NUL included).
         """
-        if self.decode:
-            if length < 1:
-                raise Malformed
-            fmt, end = f'{length - 1}sB', pos - 4 + length
-        else:
-            fmt, end = f'{length}sx', pos - 4 + length + 1
+        if length < 1:
+            raise Malformed
+        fmt, end = f'{length - 1}sB', pos - 4 + length
         for code, alignment, size in self.items:
             pad = -end % alignment
             fmt += f'{pad}x{code}' if pad else code
             end += pad + size
         compiled = Struct(self.endian + fmt)
-        entry = (compiled.unpack_from, end - (pos - 4)) if self.decode else compiled.pack
+        entry = (compiled.unpack_from, end - (pos - 4))
         if length <= _MAX_CACHED_STRING and len(self.cache) < _MAX_CACHE_ENTRIES:
             self.cache[length << 3 | pos & 7] = entry
         return entry
@@ -192,7 +195,7 @@ class _Builder:
     def __init__(self, endian: Endian) -> None:
         self.endian: Endian = endian
         self.lines: list[str] = []
-        self.namespace: dict[str, Any] = {
+        self.namespace: dict[str, object] = {
             '_Malformed': Malformed,
             '_array': array,
             '_numpy': numpy,
@@ -220,7 +223,7 @@ class _Builder:
         """Append one line at the current indentation."""
         self.lines.append('    ' * self.indent + line)
 
-    def constant(self, prefix: str, value: Any) -> str:
+    def constant(self, prefix: str, value: object) -> str:
         """Bind ``value`` as a global of the generated module and return its name."""
         name = self.name(f'_{prefix}')
         self.namespace[name] = value
@@ -327,7 +330,7 @@ class _DecoderBuilder(_Builder):
             return
         if self.dynamic is not None:
             length, string = self.dynamic.split(':')
-            structs = DynamicStructs(self.endian, self.dynamic_items, decode=True)
+            structs = DynamicStructs(self.endian, self.dynamic_items)
             cache = self.constant('D', structs.cache)
             make = self.constant('M', structs.make)
             unpack, size, raw, nul = (self.name(p) for p in ('u', 'z', 'r', 'n'))
@@ -436,7 +439,7 @@ class _DecoderBuilder(_Builder):
             ('else:', self.dynamic_items, []),
         ]
         for header, items, extra in variants:
-            structs = DynamicStructs(self.endian, items, decode=True)
+            structs = DynamicStructs(self.endian, items)
             cache = self.constant('D', structs.cache)
             make = self.constant('M', structs.make)
             self.emit(header)
@@ -676,13 +679,14 @@ class _EncoderBuilder(_Builder):
             self.field(field, f'{expr}.{field.name}')
 
 
-def _compile(builder: _Builder, header: str, footer: str, label: str) -> Any:
-    """Compile the generated body into a function and return it."""
+def _compile(builder: _Builder, header: str, footer: str, label: str) -> FunctionType:
+    """Compile the generated body into a function and return it (its text as ``.source``)."""
     source = '\n'.join([header, *builder.lines, footer])
     code = compile(source, f'<tf_demo.msgs.cdr {label}>', 'exec')
     exec(code, builder.namespace)
     function = builder.namespace['generated']
-    function.source = source
+    assert isinstance(function, FunctionType)
+    vars(function)['source'] = source
     return function
 
 

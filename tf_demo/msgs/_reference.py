@@ -23,11 +23,13 @@ fast generated codec, and the tests compare the two.
 from __future__ import annotations
 
 from array import array
+from collections.abc import Iterable
 import math
 import struct
-from typing import Any
+from typing import cast
 
 import numpy
+from tf_demo.msgs._message import Message
 from tf_demo.msgs._message import message_class
 from tf_demo.msgs._schema import FieldSpec
 from tf_demo.msgs._schema import MessageSpec
@@ -99,12 +101,17 @@ class _Reader:
         pad = -(self.pos - _HEADER_SIZE) % alignment
         self.take(pad, path, 'alignment padding')
 
-    def primitive(self, base: str, path: str) -> Any:
+    def primitive(self, base: str, path: str) -> bool | int | float | bytes:
         """Read one primitive."""
         prim = PRIMITIVES[base]
         self.align(prim.size, path)
         chunk = self.take(prim.size, path, base)
-        return struct.unpack(self.endian + prim.code, chunk)[0]
+        value: bool | int | float | bytes = struct.unpack(self.endian + prim.code, chunk)[0]
+        return value
+
+    def count(self, path: str) -> int:
+        """Read one uint32: a string's length or a sequence's count."""
+        return int(self.primitive('uint32', path))
 
     def string(self, path: str) -> str:
         """
@@ -113,7 +120,7 @@ class _Reader:
         Odd strings read as a ROS 2 Jazzy rclpy node reads them (see :func:`c_string`); only a
         string without its final NUL is an error, as in rmw_cyclonedds_cpp.
         """
-        length = self.primitive('uint32', path)
+        length = self.count(path)
         if length == 0:
             return ''  # rmw_cyclonedds_cpp reads a zero length as the empty string
         start = self.pos
@@ -123,7 +130,7 @@ class _Reader:
             raise self.fail(path, 'string does not end with NUL')
         return c_string(chunk[:-1])
 
-    def value(self, field: FieldSpec, path: str) -> Any:
+    def value(self, field: FieldSpec, path: str) -> object:
         """Read one element of ``field``'s type."""
         if field.is_nested:
             return self.message(spec_for(field.base), path)
@@ -131,12 +138,12 @@ class _Reader:
             return self.string(path)
         return self.primitive(field.base, path)
 
-    def field(self, field: FieldSpec, path: str) -> Any:
+    def field(self, field: FieldSpec, path: str) -> object:
         """Read the whole of ``field``."""
         if field.kind == 'single':
             return self.value(field, path)
         if field.kind == 'sequence':
-            count = self.primitive('uint32', path)
+            count = self.count(path)
             remaining = len(self.buf) - self.pos
             if count > remaining:
                 msg = f'sequence length {count} exceeds the {remaining} remaining bytes'
@@ -146,12 +153,12 @@ class _Reader:
         prim = PRIMITIVES.get(field.base)
         items = [self.value(field, f'{path}[{index}]') for index in range(count)]
         if prim is not None and field.kind == 'sequence' and prim.array_code:
-            return array(prim.array_code, items)
+            return array(prim.array_code, cast('list[float]', items))  # or ints: array takes both
         if prim is not None and field.kind == 'array' and prim.numpy_dtype:
             return numpy.array(items, dtype=prim.numpy_dtype)
         return items
 
-    def message(self, spec: MessageSpec, path: str) -> Any:
+    def message(self, spec: MessageSpec, path: str) -> Message:
         """Read one message of ``spec``."""
         values = {field.name: self.field(field, _join(path, field.name)) for field in spec.fields}
         return message_class(spec.msgtype)(**values)
@@ -174,7 +181,7 @@ def check_header(msgtype: str, buf: bytes) -> None:
         raise CdrError(msg)
 
 
-def reference_deserialize(msgtype: str, buf: bytes) -> Any:
+def reference_deserialize(msgtype: str, buf: bytes) -> Message:
     """
     Decode ``buf`` (header included) as ``msgtype``, checking every field.
 
@@ -199,7 +206,7 @@ class _Writer:
         """Append the padding before an item of ``alignment``."""
         self.out += bytes(-(len(self.out) - _HEADER_SIZE) % alignment)
 
-    def primitive(self, base: str, value: Any, path: str) -> None:
+    def primitive(self, base: str, value: object, path: str) -> None:
         """Write one primitive after checking its type and range."""
         prim = PRIMITIVES[base]
         if base == 'bool':
@@ -222,7 +229,7 @@ class _Writer:
         self.align(prim.size)
         self.out += struct.pack('<' + prim.code, value)
 
-    def string(self, value: Any, path: str) -> None:
+    def string(self, value: object, path: str) -> None:
         """Write one string."""
         if not isinstance(value, str):
             raise self.fail(path, f'expected str, got {value!r}')
@@ -233,7 +240,7 @@ class _Writer:
         self.primitive('uint32', len(encoded) + 1, path)
         self.out += encoded + b'\x00'
 
-    def value(self, field: FieldSpec, value: Any, path: str) -> None:
+    def value(self, field: FieldSpec, value: object, path: str) -> None:
         """Write one element of ``field``'s type."""
         if field.is_nested:
             self.message(spec_for(field.base), value, path)
@@ -242,13 +249,13 @@ class _Writer:
         else:
             self.primitive(field.base, value, path)
 
-    def field(self, field: FieldSpec, value: Any, path: str) -> None:
+    def field(self, field: FieldSpec, value: object, path: str) -> None:
         """Write the whole of ``field``."""
         if field.kind == 'single':
             self.value(field, value, path)
             return
         try:
-            items = list(value)
+            items = list(cast('Iterable[object]', value))  # whatever list() takes
         except TypeError:
             raise self.fail(path, f'expected a sequence, got {value!r}') from None
         if field.kind == 'array' and len(items) != field.size:
@@ -260,7 +267,7 @@ class _Writer:
         for index, item in enumerate(items):
             self.value(field, item, f'{path}[{index}]')
 
-    def message(self, spec: MessageSpec, value: Any, path: str) -> None:
+    def message(self, spec: MessageSpec, value: object, path: str) -> None:
         """Write one message, reading its fields by name (duck-typed)."""
         for field in spec.fields:
             child = _join(path, field.name)
@@ -272,7 +279,7 @@ class _Writer:
             self.field(field, item, child)
 
 
-def reference_serialize(msgtype: str, message: Any) -> bytes:
+def reference_serialize(msgtype: str, message: object) -> bytes:
     """
     Encode ``message`` as ``msgtype`` (little-endian, header included), checking every value.
 

@@ -16,9 +16,10 @@
 The one declarative table of ROS message definitions, and its parsed form.
 
 Every message class, every CDR codec and every RIHS01 type hash in :mod:`tf_demo.msgs` is
-generated from :data:`DEFINITIONS`. Each entry is the ``.msg`` text of ROS 2 Jazzy (fields only,
-comments and constants dropped), with ``;`` between fields. A field may carry a default as a
-Python literal after its name, e.g. ``float64 w 1.0``.
+generated from :data:`DEFINITIONS` (the package modules, ``geometry_msgs.py`` etc., are source
+files that :mod:`tf_demo.msgs._typegen` writes from it). Each entry is the ``.msg`` text of ROS 2
+Jazzy (comments dropped), with ``;`` between fields and constants. A field may carry a default as
+a Python literal after its name, e.g. ``float64 w 1.0``; a constant is ``uint8 NAME=value``.
 """
 
 from __future__ import annotations
@@ -73,10 +74,16 @@ DEFINITIONS: dict[str, str] = {
         'Gid gid; NodeEntitiesInfo[] node_entities_info_seq'
     ),
     'service_msgs/msg/ServiceEventInfo': (
-        'uint8 event_type; builtin_interfaces/Time stamp; char[16] client_gid; '
-        'int64 sequence_number'
+        'uint8 REQUEST_SENT=0; uint8 REQUEST_RECEIVED=1; uint8 RESPONSE_SENT=2; '
+        'uint8 RESPONSE_RECEIVED=3; uint8 event_type; builtin_interfaces/Time stamp; '
+        'char[16] client_gid; int64 sequence_number'
     ),
-    'rcl_interfaces/msg/ParameterType': '',
+    'rcl_interfaces/msg/ParameterType': (
+        'uint8 PARAMETER_NOT_SET=0; uint8 PARAMETER_BOOL=1; uint8 PARAMETER_INTEGER=2; '
+        'uint8 PARAMETER_DOUBLE=3; uint8 PARAMETER_STRING=4; uint8 PARAMETER_BYTE_ARRAY=5; '
+        'uint8 PARAMETER_BOOL_ARRAY=6; uint8 PARAMETER_INTEGER_ARRAY=7; '
+        'uint8 PARAMETER_DOUBLE_ARRAY=8; uint8 PARAMETER_STRING_ARRAY=9'
+    ),
     'rcl_interfaces/msg/ParameterValue': (
         'uint8 type; bool bool_value; int64 integer_value; float64 double_value; '
         'string string_value; byte[] byte_array_value; bool[] bool_array_value; '
@@ -97,6 +104,7 @@ DEFINITIONS: dict[str, str] = {
         'Parameter[] changed_parameters; Parameter[] deleted_parameters'
     ),
     'rcl_interfaces/msg/Log': (
+        'uint8 DEBUG=10; uint8 INFO=20; uint8 WARN=30; uint8 ERROR=40; uint8 FATAL=50; '
         'builtin_interfaces/Time stamp; uint8 level; string name; string msg; string file; '
         'string function; uint32 line'
     ),
@@ -107,7 +115,7 @@ DEFINITIONS: dict[str, str] = {
 #: (rosidl's service event message) to :data:`DEFINITIONS`.
 SERVICE_DEFINITIONS: dict[str, tuple[str, str]] = {
     'rcl_interfaces/srv/ListParameters': (
-        'string[] prefixes; uint64 depth',
+        'uint64 DEPTH_RECURSIVE=0; string[] prefixes; uint64 depth',
         'ListParametersResult result',
     ),
     'rcl_interfaces/srv/GetParameters': ('string[] names', 'ParameterValue[] values'),
@@ -208,16 +216,33 @@ class FieldSpec:
 
 
 @dataclass(frozen=True)
+class ConstantSpec:
+    """
+    One constant of a message (``uint8 DEBUG=10``): a class attribute, not on the wire.
+
+    :ivar name: the constant's name.
+    :ivar base: its primitive type name, or ``'string'``.
+    :ivar value: its value.
+    """
+
+    name: str
+    base: str
+    value: bool | int | float | str
+
+
+@dataclass(frozen=True)
 class MessageSpec:
     """
     A parsed message definition.
 
     :ivar msgtype: ``'pkg/msg/Name'``.
     :ivar fields: the fields in wire order.
+    :ivar constants: the constants, in definition order.
     """
 
     msgtype: str
     fields: tuple[FieldSpec, ...]
+    constants: tuple[ConstantSpec, ...] = ()
 
     @property
     def package(self) -> str:
@@ -248,6 +273,27 @@ _FIELD_RE = re.compile(
     r'^(?P<base>[A-Za-z][\w/]*?)(?:<=(?P<strbound>\d+))?'
     r'(?:\[(?P<le><=)?(?P<size>\d*)\])?\s+(?P<name>[a-z][a-z0-9_]*)(?:\s+(?P<default>.+))?$'
 )
+
+_CONSTANT_RE = re.compile(
+    r'^(?P<base>[a-z][a-z0-9]*)\s+(?P<name>[A-Z][A-Z0-9_]*)\s*=\s*(?P<value>.+)$'
+)
+
+
+def _parse_constant(match: re.Match[str]) -> ConstantSpec:
+    """Parse one ``.msg`` constant line (``uint8 NAME=value``)."""
+    base = match['base']
+    value = ast.literal_eval(match['value'].strip())
+    if base == 'string':
+        expected: type = str
+    elif base in PRIMITIVES and base != 'byte':
+        expected = type(PRIMITIVES[base].default)  # bool, int or float
+    else:
+        msg = f'constants of type {base!r} are not supported: {match.string!r}'
+        raise SchemaError(msg)
+    if not isinstance(value, bool | int | float | str) or type(value) is not expected:
+        msg = f'cannot parse constant definition {match.string!r}'
+        raise SchemaError(msg)
+    return ConstantSpec(match['name'], match['base'], value)
 
 
 def _parse_field(package: str, text: str) -> FieldSpec:
@@ -282,9 +328,14 @@ def _parse_field(package: str, text: str) -> FieldSpec:
 def parse_definition(msgtype: str, text: str) -> MessageSpec:
     """Parse the ``;``-separated ``.msg`` text of ``msgtype``."""
     package = msgtype.split('/', 1)[0]
-    parts = [part for part in text.split(';') if part.strip()] or [EMPTY_STRUCTURE]
-    fields = tuple(_parse_field(package, part) for part in parts)
-    return MessageSpec(msgtype, fields)
+    parts = [part.strip() for part in text.split(';') if part.strip()]
+    constants = [_CONSTANT_RE.match(part) for part in parts]
+    fields = [part for part, constant in zip(parts, constants, strict=True) if not constant]
+    return MessageSpec(
+        msgtype,
+        tuple(_parse_field(package, part) for part in fields or [EMPTY_STRUCTURE]),
+        tuple(_parse_constant(constant) for constant in constants if constant),
+    )
 
 
 #: Every message type of :data:`DEFINITIONS`, parsed.

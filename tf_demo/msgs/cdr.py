@@ -39,11 +39,17 @@ from collections.abc import Sequence
 import functools
 from struct import Struct
 from typing import Any
+from typing import cast
+from typing import overload
+from typing import Protocol
 from typing import TypeVar
 
 from tf_demo.core.math3d import Quat
 from tf_demo.core.math3d import Vec3
 from tf_demo.msgs import _codegen
+from tf_demo.msgs._codegen import Decoder
+from tf_demo.msgs._codegen import Encoder
+from tf_demo.msgs._codegen import StructValues
 from tf_demo.msgs._message import blank_instance_maker
 from tf_demo.msgs._message import Message
 from tf_demo.msgs._message import message_class
@@ -52,6 +58,14 @@ from tf_demo.msgs._reference import check_header
 from tf_demo.msgs._reference import reference_deserialize
 from tf_demo.msgs._reference import reference_serialize
 from tf_demo.msgs._schema import spec_for
+from tf_demo.msgs.builtin_interfaces import Time
+from tf_demo.msgs.convert import TransformStampedLike
+from tf_demo.msgs.geometry_msgs import Quaternion
+from tf_demo.msgs.geometry_msgs import Transform
+from tf_demo.msgs.geometry_msgs import TransformStamped
+from tf_demo.msgs.geometry_msgs import Vector3
+from tf_demo.msgs.std_msgs import Header
+from tf_demo.msgs.tf2_msgs import TFMessage
 
 __all__ = [
     'CdrError',
@@ -74,7 +88,7 @@ TransformTuple = tuple[
 _TF_MESSAGE = 'tf2_msgs/msg/TFMessage'
 
 
-def msgtype_of(message_or_type: Any) -> str:
+def msgtype_of(message_or_type: object) -> str:
     """
     Return ``pkg/msg/Name`` for a type name, our class, an rclpy class, or an instance.
 
@@ -104,14 +118,14 @@ def msgtype_of(message_or_type: Any) -> str:
 
 
 @functools.cache
-def _encoder(msgtype: str) -> Callable[[Any], bytes]:
+def _encoder(msgtype: str) -> Encoder:
     """Return the encoder of ``msgtype`` (generated; for TFMessage with whole-message layouts)."""
     generated = _codegen.generate_encoder(msgtype)
     return _tf_encoder(generated) if msgtype == _TF_MESSAGE else generated
 
 
 @functools.cache
-def _decoders(msgtype: str) -> tuple[_codegen.Decoder, _codegen.Decoder]:
+def _decoders(msgtype: str) -> tuple[Decoder, Decoder]:
     """Return the (big-endian, little-endian) decoders of ``msgtype`` (generated; tf: layouts)."""
     big, little = _codegen.generate_decoder(msgtype, '>'), _codegen.generate_decoder(msgtype, '<')
     if msgtype == _TF_MESSAGE:
@@ -119,11 +133,13 @@ def _decoders(msgtype: str) -> tuple[_codegen.Decoder, _codegen.Decoder]:
     return big, little
 
 
-# Per message class (or type name): (msgtype, encoder, decoders), so a call costs one dict lookup.
-_CODECS: dict[Any, tuple[str, Callable[[Any], bytes], Any]] = {}
+#: (msgtype, encoder, (big-endian decoder, little-endian decoder)) of one type.
+_Codecs = tuple[str, Encoder, tuple[Decoder, Decoder]]
+# Per message class (or type name), so that a call costs one dict lookup.
+_CODECS: dict[str | type, _Codecs] = {}
 
 
-def _codecs(key: Any) -> tuple[str, Callable[[Any], bytes], Any]:
+def _codecs(key: object) -> _Codecs:
     """Return (msgtype, encoder, decoder pair) for a class, instance's class or type name."""
     msgtype = msgtype_of(key)
     entry = (msgtype, _encoder(msgtype), _decoders(msgtype))
@@ -132,7 +148,7 @@ def _codecs(key: Any) -> tuple[str, Callable[[Any], bytes], Any]:
     return entry
 
 
-def serialize(message: Any) -> bytes:
+def serialize(message: object) -> bytes:
     """
     Encode ``message`` as ROS 2 does: ``00 01 00 00`` then the little-endian CDR body.
 
@@ -150,7 +166,7 @@ def serialize(message: Any) -> bytes:
         raise CdrError(msg) from exc
 
 
-def _slow_path(msgtype: str, buf: bytes) -> Any:
+def _slow_path(msgtype: str, buf: bytes) -> Message:
     """
     Decode bytes the fast decoder turned down with the reference decoder.
 
@@ -164,7 +180,15 @@ def _slow_path(msgtype: str, buf: bytes) -> Any:
         raise error from None
 
 
-def deserialize(msg_type: type[MessageT] | str | Any, data: bytes | bytearray | memoryview) -> Any:
+@overload
+def deserialize(msg_type: type[MessageT], data: bytes | bytearray | memoryview) -> MessageT: ...
+
+
+@overload
+def deserialize(msg_type: object, data: bytes | bytearray | memoryview) -> Message: ...
+
+
+def deserialize(msg_type: object, data: bytes | bytearray | memoryview) -> Message:
     """
     Decode ``data`` (encapsulation header included) into a message of ``msg_type``.
 
@@ -195,14 +219,12 @@ class _TfLayouts:
         self.count = Struct(endian + 'I').unpack_from
         self.header = Struct(endian + 'iII').unpack_from
         # parent characters, NUL, padding, child length
-        self.parent = _codegen.DynamicStructs(endian, [('I', 4, 4)], decode=True)
+        self.parent = _codegen.DynamicStructs(endian, [('I', 4, 4)])
         # child characters, NUL, padding, pose; for all but the last transform also the next
         # transform's stamp and frame_id length (one unpack fewer per transform)
         pose = ('7d', 8, 56)
-        self.last_child = _codegen.DynamicStructs(endian, [pose], decode=True)
-        self.child = _codegen.DynamicStructs(
-            endian, [pose, ('i', 4, 4), ('I', 4, 4), ('I', 4, 4)], decode=True
-        )
+        self.last_child = _codegen.DynamicStructs(endian, [pose])
+        self.child = _codegen.DynamicStructs(endian, [pose, ('i', 4, 4), ('I', 4, 4), ('I', 4, 4)])
 
 
 _TF_LAYOUTS = (_TfLayouts('>'), _TfLayouts('<'))
@@ -259,7 +281,7 @@ _TF_LAYOUT_BUDGET = 8192
 
 #: (parent lengths, child lengths, compiled whole-message ``unpack_from`` or None, its size).
 _TfLayout = tuple[
-    tuple[int, ...], tuple[int, ...], Callable[[bytes, int], tuple[Any, ...]] | None, int
+    tuple[int, ...], tuple[int, ...], Callable[[bytes, int], StructValues] | None, int
 ]
 
 
@@ -305,7 +327,7 @@ class _TfShapes:
         self.layouts: dict[int, _TfLayout] = {}
         self.compiled = 0  # transforms covered by the compiled layouts
 
-    def read(self, buf: bytes) -> tuple[tuple[Any, ...], int] | None:
+    def read(self, buf: bytes) -> tuple[StructValues, int] | None:
         """
         Return every field of ``buf`` (count first) and the end of the message, or None.
 
@@ -355,18 +377,18 @@ class _TfShapes:
 _TF_SHAPES = (_TfShapes('>'), _TfShapes('<'))
 
 
-def _tf_message_builder() -> Callable[[tuple[Any, ...]], Message]:
+def _tf_message_builder() -> Callable[[StructValues], TFMessage]:
     """Return the function that builds a TFMessage from the fields :meth:`_TfShapes.read` gave."""
-    new_time = blank_instance_maker(message_class('builtin_interfaces/msg/Time'))
-    new_header = blank_instance_maker(message_class('std_msgs/msg/Header'))
-    new_vector = blank_instance_maker(message_class('geometry_msgs/msg/Vector3'))
-    new_quaternion = blank_instance_maker(message_class('geometry_msgs/msg/Quaternion'))
-    new_transform = blank_instance_maker(message_class('geometry_msgs/msg/Transform'))
-    new_stamped = blank_instance_maker(message_class('geometry_msgs/msg/TransformStamped'))
-    new_message = blank_instance_maker(message_class(_TF_MESSAGE))
+    new_time = blank_instance_maker(Time)
+    new_header = blank_instance_maker(Header)
+    new_vector = blank_instance_maker(Vector3)
+    new_quaternion = blank_instance_maker(Quaternion)
+    new_transform = blank_instance_maker(Transform)
+    new_stamped = blank_instance_maker(TransformStamped)
+    new_message = blank_instance_maker(TFMessage)
 
-    def build(values: tuple[Any, ...]) -> Message:
-        transforms: list[Any] = []
+    def build(values: StructValues) -> TFMessage:
+        transforms: list[TransformStamped] = []
         append = transforms.append
         fields = iter(values)
         next(fields)  # the count
@@ -403,7 +425,7 @@ def _tf_message_builder() -> Callable[[tuple[Any, ...]], Message]:
     return build
 
 
-def _tf_decoder(generated: _codegen.Decoder, shapes: _TfShapes) -> _codegen.Decoder:
+def _tf_decoder(generated: Decoder, shapes: _TfShapes) -> Decoder:
     """
     Wrap the generated TFMessage decoder of one byte order with the whole-message layouts.
 
@@ -412,14 +434,16 @@ def _tf_decoder(generated: _codegen.Decoder, shapes: _TfShapes) -> _codegen.Deco
     """
     build = _tf_message_builder()
     read, learn = shapes.read, shapes.learn
+    # The generated decoder of TFMessage makes TFMessages.
+    generated_tf = cast('Callable[[bytes, int], tuple[TFMessage, int]]', generated)
 
-    def decode(buf: bytes, pos: int) -> tuple[Any, int]:
+    def decode(buf: bytes, pos: int) -> tuple[TFMessage, int]:
         if pos != 4:
-            return generated(buf, pos)
+            return generated_tf(buf, pos)
         known = read(buf)
         if known is not None:
             return build(known[0]), known[1]
-        message, end = generated(buf, pos)
+        message, end = generated_tf(buf, pos)
         transforms = message.transforms
         if len(transforms) < _MIN_TF_LAYOUT_TRANSFORMS:
             return message, end
@@ -443,7 +467,14 @@ _MAX_CACHED_NAMES = 4096
 _CDR_LE_HEADER = 0x100
 
 
-def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
+class _TFMessageLike(Protocol):
+    """A ``tf2_msgs/TFMessage`` of either world."""
+
+    @property
+    def transforms(self) -> Sequence[TransformStampedLike]: ...
+
+
+def _tf_encoder(generated: Encoder) -> Encoder:
     """
     Wrap the generated TFMessage encoder with whole-message layouts.
 
@@ -469,13 +500,13 @@ def _tf_encoder(generated: Callable[[Any], bytes]) -> Callable[[Any], bytes]:
             names[text] = entry
         return entry
 
-    def encode(message: Any) -> bytes:
+    def encode(message: _TFMessageLike) -> bytes:
         nonlocal compiled
         transforms = message.transforms
         count = len(transforms)
         if not _MIN_TF_LAYOUT_TRANSFORMS <= count <= _MAX_TF_LAYOUT_TRANSFORMS:
             return generated(message)
-        fields: list[Any] = [_CDR_LE_HEADER, count]
+        fields: list[Any] = [_CDR_LE_HEADER, count]  # the pack's arguments
         for stamped in transforms:
             header = stamped.header
             stamp = header.stamp
@@ -576,7 +607,7 @@ class TfMessageEncoder:
         return b''.join(parts)
 
 
-def _tf_tuples(values: tuple[Any, ...]) -> list[TransformTuple]:
+def _tf_tuples(values: StructValues) -> list[TransformTuple]:
     """Return the transform tuples of the fields :meth:`_TfShapes.read` gave."""
     fields = iter(values)
     next(fields)  # the count
@@ -617,7 +648,7 @@ def decode_tf_message_transforms(data: bytes | bytearray | memoryview) -> list[T
         )
         return transforms
     except Exception:
-        message = _slow_path(_TF_MESSAGE, buf)
+        message = cast('TFMessage', _slow_path(_TF_MESSAGE, buf))
     return [
         (
             t.header.frame_id, t.child_frame_id,

@@ -16,13 +16,14 @@
 Conversions between ROS messages and the core's plain values.
 
 Duck-typed: the functions read and write fields by name, so they work on rclpy's messages and on
-:mod:`tf_demo.msgs`'s alike. Time is integer nanoseconds throughout the core.
+:mod:`tf_demo.msgs`'s alike; the protocols below say which fields (rclpy's classes are untyped,
+:mod:`tf_demo.msgs`'s satisfy them). Time is integer nanoseconds throughout the core.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import Protocol
 from typing import TypeVar
 
 from tf_demo.core.math3d import Quat
@@ -31,10 +32,63 @@ from tf_demo.core.math3d import Vec3
 NS_PER_S = 1_000_000_000
 _INT32_MIN, _INT32_MAX = -(2**31), 2**31 - 1
 
-MessageT = TypeVar('MessageT')
+
+class StampLike(Protocol):
+    """A ``builtin_interfaces/Time`` or ``Duration`` of either world."""
+
+    sec: int
+    nanosec: int
 
 
-def ns_from_stamp(time_msg: Any) -> int:
+class HeaderLike(Protocol):
+    """A ``std_msgs/Header`` of either world."""
+
+    frame_id: str
+
+    @property
+    def stamp(self) -> StampLike: ...
+
+
+class Vector3Like(Protocol):
+    """A ``geometry_msgs/Vector3`` of either world."""
+
+    x: float
+    y: float
+    z: float
+
+
+class QuaternionLike(Vector3Like, Protocol):
+    """A ``geometry_msgs/Quaternion`` of either world."""
+
+    w: float
+
+
+class TransformLike(Protocol):
+    """A ``geometry_msgs/Transform`` of either world."""
+
+    @property
+    def translation(self) -> Vector3Like: ...
+
+    @property
+    def rotation(self) -> QuaternionLike: ...
+
+
+class TransformStampedLike(Protocol):
+    """A ``geometry_msgs/TransformStamped`` of either world."""
+
+    child_frame_id: str
+
+    @property
+    def header(self) -> HeaderLike: ...
+
+    @property
+    def transform(self) -> TransformLike: ...
+
+
+TransformStampedT = TypeVar('TransformStampedT', bound=TransformStampedLike)
+
+
+def ns_from_stamp(time_msg: StampLike) -> int:
     """Return the nanoseconds of a ``builtin_interfaces/Time`` (or ``Duration``)."""
     return int(time_msg.sec) * NS_PER_S + int(time_msg.nanosec)
 
@@ -52,7 +106,7 @@ def stamp_fields_from_ns(ns: int) -> tuple[int, int]:
     return sec, nanosec
 
 
-def transform_stamped_args(msg: Any) -> tuple[str, str, int, Vec3, Quat]:
+def transform_stamped_args(msg: TransformStampedLike) -> tuple[str, str, int, Vec3, Quat]:
     """Return ``(parent, child, stamp_ns, translation, rotation)`` of a TransformStamped."""
     translation = msg.transform.translation
     rotation = msg.transform.rotation
@@ -66,13 +120,13 @@ def transform_stamped_args(msg: Any) -> tuple[str, str, int, Vec3, Quat]:
 
 
 def fill_transform_stamped(  # noqa: PLR0917 - signature fixed by doc/architecture.md
-    msg: MessageT,
+    msg: TransformStampedT,
     parent: str,
     child: str,
     stamp_ns: int,
     translation: Sequence[float],
     rotation: Sequence[float],
-) -> MessageT:
+) -> TransformStampedT:
     """
     Write a transform into the TransformStamped ``msg`` (in place) and return ``msg``.
 
@@ -85,14 +139,13 @@ def fill_transform_stamped(  # noqa: PLR0917 - signature fixed by doc/architectu
             f'got {len(translation)} and {len(rotation)}'
         )
         raise ValueError(text)
-    target: Any = msg
     sec, nanosec = stamp_fields_from_ns(stamp_ns)
-    target.header.stamp.sec = sec
-    target.header.stamp.nanosec = nanosec
-    target.header.frame_id = parent
-    target.child_frame_id = child
-    out_translation = target.transform.translation
+    msg.header.stamp.sec = sec
+    msg.header.stamp.nanosec = nanosec
+    msg.header.frame_id = parent
+    msg.child_frame_id = child
+    out_translation = msg.transform.translation
     out_translation.x, out_translation.y, out_translation.z = (float(v) for v in translation)
-    out_rotation = target.transform.rotation
+    out_rotation = msg.transform.rotation
     out_rotation.x, out_rotation.y, out_rotation.z, out_rotation.w = (float(v) for v in rotation)
     return msg

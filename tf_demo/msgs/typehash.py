@@ -25,12 +25,14 @@ from __future__ import annotations
 import functools
 import hashlib
 import json
-from typing import Any
 
 from tf_demo.msgs._schema import FieldSpec
 from tf_demo.msgs._schema import MessageSpec
 from tf_demo.msgs._schema import SERVICE_SPECS
 from tf_demo.msgs._schema import spec_for
+
+#: A value of the JSON text that is hashed.
+JsonValue = str | int | list['JsonValue'] | dict[str, 'JsonValue']
 
 _VALUE_TYPE_IDS = {
     'nested': 1,
@@ -75,7 +77,7 @@ def _spec(typename: str) -> MessageSpec:
     return service if service is not None else spec_for(typename)
 
 
-def _individual_description(msgtype: str) -> dict[str, Any]:
+def _individual_description(msgtype: str) -> dict[str, JsonValue]:
     """Return the hashable individual type description of ``msgtype`` (no default values)."""
     spec = _spec(msgtype)
     return {
@@ -95,7 +97,7 @@ def _individual_description(msgtype: str) -> dict[str, Any]:
     }
 
 
-def type_description(msgtype: str) -> dict[str, Any]:
+def type_description(msgtype: str) -> dict[str, JsonValue]:
     """Return the full hashable type description of ``msgtype`` with its referenced types."""
     top = _spec(msgtype)
     referenced: set[str] = set()
