@@ -21,50 +21,14 @@ import pytest
 from tf_demo.cli._args import c_float_range_error
 from tf_demo.cli._args import count_argument
 from tf_demo.cli._args import OLD_STYLE_WARNING
-from tf_demo.cli._args import parse_c_float
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._args import parse_static_transform_args
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._args import whole_number
 from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.ros.node_helpers import rate_error
-
-
-@pytest.mark.parametrize(
-    ('text', 'expected'),
-    [
-        ('1.5', (1.5, 3)),
-        ('  -2e3xyz', (-2000.0, 6)),
-        ('1.0foo', (1.0, 3)),
-        ('.5', (0.5, 2)),
-        ('0x1p4', (16.0, 5)),
-        ('1e', (1.0, 1)),
-        ('abc', None),
-        ('', None),
-        ('-', None),
-    ],
-)
-def test_parse_c_float_takes_the_numeric_prefix(text, expected):
-    """The strtod-like parser consumes the longest numeric prefix, as std::stod does."""
-    assert parse_c_float(text) == expected
-
-
-def test_parse_c_float_special_values():
-    """inf and nan are numbers for strtod."""
-    value, _ = parse_c_float('-inf')
-    assert value == -math.inf
-    value, _ = parse_c_float('nan')
-    assert math.isnan(value)
-
-
-def test_split_ros_args():
-    """--ros-args sections run to '--' and are removed from the tool's arguments."""
-    tool, ros = split_ros_args(
-        ['a', '--ros-args', '-p', 'x:=1', '--', 'b', '--ros-args', '-r', 'q']
-    )
-    assert tool == ['a', 'b']
-    assert ros == ['--ros-args', '-p', 'x:=1', '--ros-args', '-r', 'q']
+from tf_demo.transport.params_c_numbers import c_strtod
+from tf_demo.transport.params_c_numbers import CDouble
 
 
 def test_static_flags():
@@ -201,12 +165,20 @@ def test_echo_extras():
 def test_static_zero_and_infinity_spelled_out_are_in_range():
     """A literal zero however written, and a spelled inf, are not range errors (stod agrees)."""
     for text in ('0', '0e-400', '0x0p-9999', '-0.0', '.0e5'):
-        assert c_float_range_error(text, parse_c_float(text)[0]) is None
-    assert c_float_range_error('inf', math.inf) is None
-    assert c_float_range_error('1e308', 1e308) is None
-    assert c_float_range_error('1e39', 1e39) is None
-    assert c_float_range_error('1e39', 1e39, single=True) == 'out of range (too large for a float)'
-    assert c_float_range_error('1e-39', 1e-39, single=True) == 'out of range (too small)'
+        assert c_float_range_error(_strtod(text)) is None
+    assert c_float_range_error(_strtod('inf')) is None
+    assert c_float_range_error(_strtod('1e308')) is None
+    assert c_float_range_error(_strtod('1e39')) is None
+    assert (
+        c_float_range_error(_strtod('1e39'), single=True) == 'out of range (too large for a float)'
+    )
+    assert c_float_range_error(_strtod('1e-39'), single=True) == 'out of range (too small)'
+
+
+def _strtod(text: str) -> CDouble:
+    parsed = c_strtod(text)
+    assert parsed is not None
+    return parsed
 
 
 @pytest.mark.parametrize(

@@ -17,17 +17,17 @@
 import json
 
 from tf_demo.cli._doctor import diagnose
-from tf_demo.cli._doctor import exit_code
-from tf_demo.cli._doctor import format_report
-from tf_demo.cli._doctor import format_report_json
-from tf_demo.cli._doctor import Observation
-from tf_demo.cli._doctor import observations_from_snapshot
-from tf_demo.cli._doctor import ObservedTransform
-from tf_demo.cli._doctor import RobotInfo
-from tf_demo.cli._doctor import RobotJoint
-from tf_demo.cli._doctor import summarize
-from tf_demo.cli._doctor import TF_STATIC_TOPIC
-from tf_demo.cli._doctor import TF_TOPIC
+from tf_demo.cli._doctor_report import exit_code
+from tf_demo.cli._doctor_report import format_report
+from tf_demo.cli._doctor_report import format_report_json
+from tf_demo.cli._doctor_report import summarize
+from tf_demo.cli._doctor_robot import RobotInfo
+from tf_demo.cli._doctor_robot import RobotJoint
+from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import observations_from_snapshot
+from tf_demo.cli._observations import ObservedTransform
+from tf_demo.cli._observations import TF_STATIC_TOPIC
+from tf_demo.cli._observations import TF_TOPIC
 from tf_demo.cli._snapshot import parse_snapshot
 
 S = 1_000_000_000
@@ -47,6 +47,23 @@ def stream(parent, child, *, rate_hz=20.0, seconds=2.0, delay_ns=1_000_000, valu
         transform = ObservedTransform(parent, child, stamp, t)
         result.append(Observation(TF_TOPIC, stamp + delay_ns, (transform,), pub))
     return result
+
+
+def later(observations, seconds):
+    """The same messages, received and stamped ``seconds`` later."""
+    shift = seconds * S
+    return [
+        Observation(
+            o.topic,
+            o.receive_ns + shift,
+            tuple(
+                ObservedTransform(t.parent, t.child, t.stamp_ns + shift, t.translation)
+                for t in o.transforms
+            ),
+            o.publisher,
+        )
+        for o in observations
+    ]
 
 
 def healthy():
@@ -238,18 +255,7 @@ def test_stopped_stream():
 def test_publisher_restart_is_not_a_fight():
     """One publisher replaced by another (a restart) is not reported as fighting."""
     first = stream('odom', 'base_link', pub='p1')
-    second = [
-        Observation(
-            o.topic,
-            o.receive_ns + 3 * S,
-            tuple(
-                ObservedTransform(t.parent, t.child, t.stamp_ns + 3 * S, t.translation)
-                for t in o.transforms
-            ),
-            'p2',
-        )
-        for o in stream('odom', 'base_link', pub='p2')
-    ]
+    second = later(stream('odom', 'base_link', pub='p2'), 3)
     assert diagnose([static('map', 'odom'), *first, *second]) == []
 
 
@@ -285,17 +291,7 @@ def test_text_report_golden():
 def test_lookup_without_common_time_fails():
     """Two dynamic links whose data never overlap give tf2's extrapolation error for --frames."""
     early = stream('map', 'odom', seconds=1.0)
-    late = [
-        Observation(
-            o.topic,
-            o.receive_ns + 20 * S,
-            tuple(
-                ObservedTransform(t.parent, t.child, t.stamp_ns + 20 * S, t.translation)
-                for t in o.transforms
-            ),
-        )
-        for o in stream('odom', 'base_link', seconds=1.0)
-    ]
+    late = later(stream('odom', 'base_link', seconds=1.0), 20)
     findings = diagnose(early + late, frames=['map', 'base_link'])
     finding = next(f for f in findings if f.kind == 'lookup_fails')
     assert 'extrapolation into the past' in finding.message

@@ -33,24 +33,20 @@ from typing import Any
 
 import pytest
 from tf_demo import transport
+from tf_demo.cli._snapshot import Snapshot
+from tf_demo.cli._snapshot import SnapshotTransform
+from tf_demo.cli._snapshot import write_snapshot
 
 pytestmark = [pytest.mark.dds, pytest.mark.timeout(180)]
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
-SNAPSHOT = """tf_demo_transforms: 1
-transform_count: 1
-transforms:
-  - parent: a
-    child: b
-    translation: [0.0, 0.0, 0.0]
-    rotation: [0.0, 0.0, 0.0, 1.0]
-"""
+SNAPSHOT = Snapshot((SnapshotTransform('a', 'b', (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),))
 
 
 def executable_arguments(tmp_path: Path) -> dict[str, list[str]]:
     """Every executable of setup.py, with arguments that keep it running until stopped."""
     snapshot = tmp_path / 'snapshot.yaml'
-    snapshot.write_text(SNAPSHOT, encoding='utf-8')
+    write_snapshot(snapshot, SNAPSHOT)
     urdf = str(REPO_ROOT / 'urdf' / 'example_revolute.urdf')
     return {
         'static_tf_pub': [],

@@ -41,19 +41,21 @@ from tf_demo.cli import tf_loader
 from tf_demo.cli import tf_monitor
 from tf_demo.cli import tf_saver
 from tf_demo.cli import view_frames
-from tf_demo.cli._args import parse_c_float
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._args import parse_static_transform_args
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._snapshot import dump_snapshot
+from tf_demo.cli._snapshot import ENTRY_KEYS
 from tf_demo.cli._snapshot import parse_snapshot
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotError
 from tf_demo.cli._snapshot import SnapshotTransform
+from tf_demo.cli._snapshot import TOP_KEYS
 from tf_demo.nodes import non_ros_arguments
 from tf_demo.ros.node_helpers import MIN_RATE_HZ
+from tf_demo.transport.params_c_numbers import c_strtod
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import RosArgsError
+from tf_demo.transport.ros_args import split_ros_args
 import yaml
 
 pytestmark = [pytest.mark.property, pytest.mark.timeout(120)]
@@ -188,25 +190,7 @@ yaml_scalars = st.one_of(
     st.floats(),
     st.text(max_size=10),
 )
-yaml_keys = st.sampled_from(
-    [
-        'tf_demo_transforms',
-        'transform_count',
-        'transforms',
-        'recorded_at',
-        'parent',
-        'child',
-        'translation',
-        'rotation',
-        'static',
-        'stamp',
-        'sec',
-        'nanosec',
-        'authority',
-        'rate_hz',
-        'sample_count',
-    ]
-)
+yaml_keys = st.sampled_from([*TOP_KEYS, *ENTRY_KEYS, 'sec', 'nanosec'])
 yaml_documents = st.recursive(
     yaml_scalars,
     lambda children: st.lists(children, max_size=5) | st.dictionaries(yaml_keys, children),
@@ -261,11 +245,11 @@ def test_static_transform_publisher_arguments(argv: list[str]) -> None:
 
 @settings(max_examples=FUZZ_ARGS, deadline=None, suppress_health_check=_QUIET)
 @given(st.text(max_size=30))
-def test_parse_c_float_never_raises(text: str) -> None:
+def test_c_strtod_never_raises(text: str) -> None:
     """strtod's prefix rule on any text: a value and a length, or None."""
-    parsed = parse_c_float(text)
+    parsed = c_strtod(text)
     if parsed is not None:
-        assert 0 < parsed[1] <= len(text)
+        assert 0 < parsed.length <= len(text)
 
 
 def _argparse_tool(

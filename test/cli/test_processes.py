@@ -228,22 +228,29 @@ def test_echo_json_and_inverse_direction(spawn, peers):
     assert record['source_frame'] == 'laser'
 
 
-def read_until(process, marker, limit_s=60.0):
-    """Read the process' stdout until a line equal to ``marker`` (a guard against hangs)."""
+def read_lines(stream, found, what, limit_s=60.0):
+    """Read ``stream`` until a line ``found`` accepts (a guard against hangs); return the lines."""
     deadline = time.monotonic() + limit_s
     lines = []
     while time.monotonic() < deadline:
-        ready, _, _ = select.select([process.stdout], [], [], 0.5)
+        ready, _, _ = select.select([stream], [], [], 0.5)
         if not ready:
             continue
-        line = process.stdout.readline()
+        line = stream.readline()
         if not line:
             break
         lines.append(line)
-        if line.startswith(marker):
+        if found(line):
             return lines
-    pytest.fail(f'no line starting with {marker!r} in: {"".join(lines)}')
+    pytest.fail(f'no line {what} in: {"".join(lines)}')
     return lines
+
+
+def read_until(process, marker):
+    """Read the process' stdout until a line starting with ``marker``."""
+    return read_lines(
+        process.stdout, lambda line: line.startswith(marker), f'starting with {marker!r}'
+    )
 
 
 def test_echo_failure_block_when_the_tree_changes(spawn, peers):
@@ -265,22 +272,9 @@ def test_echo_failure_block_when_the_tree_changes(spawn, peers):
     assert echo.stdout.readline() == '\n'
 
 
-def read_stderr_until(process, marker, limit_s=60.0):
-    """Read the process' stderr until a line containing ``marker`` (a guard against hangs)."""
-    deadline = time.monotonic() + limit_s
-    lines = []
-    while time.monotonic() < deadline:
-        ready, _, _ = select.select([process.stderr], [], [], 0.5)
-        if not ready:
-            continue
-        line = process.stderr.readline()
-        if not line:
-            break
-        lines.append(line)
-        if marker in line:
-            return line
-    pytest.fail(f'no line with {marker!r} in: {"".join(lines)}')
-    return ''
+def read_stderr_until(process, marker):
+    """Read the process' stderr until a line containing ``marker``; return that line."""
+    return read_lines(process.stderr, lambda line: marker in line, f'with {marker!r}')[-1]
 
 
 def test_echo_logs_the_waiting_line(spawn):

@@ -17,11 +17,11 @@
 import math
 
 import pytest
-from tf_demo.cli._doctor import Observation
-from tf_demo.cli._doctor import ObservedTransform
-from tf_demo.cli._doctor import TF_STATIC_TOPIC
-from tf_demo.cli._doctor import TF_TOPIC
 from tf_demo.cli._live import ToolError
+from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import ObservedTransform
+from tf_demo.cli._observations import TF_STATIC_TOPIC
+from tf_demo.cli._observations import TF_TOPIC
 from tf_demo.cli.tf_saver import latest_links
 from tf_demo.cli.tf_saver import select_links
 

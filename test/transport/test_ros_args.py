@@ -369,6 +369,15 @@ def test_executable_with_bad_arguments_exits_1_with_usage(
     assert 'Traceback' not in completed.stderr
 
 
+def test_split_ros_args_drops_each_section_for_the_tool() -> None:
+    """--ros-args sections run to '--' and are removed from the tool's arguments."""
+    tool, ros = split_ros_args(
+        ['a', '--ros-args', '-p', 'x:=1', '--', 'b', '--ros-args', '-r', 'q']
+    )
+    assert tool == ['a', 'b']
+    assert ros == ['--ros-args', '-p', 'x:=1', '--ros-args', '-r', 'q']
+
+
 def test_node_prefixed_param_rule_names_the_node_key_as_rcl_does() -> None:
     """-p talker:x:=1 is the key /talker: it does not reach /ns/talker."""
     parsed = parse_ros_args(['--ros-args', '-p', 'talker:x:=1'])

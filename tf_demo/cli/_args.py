@@ -16,80 +16,23 @@
 Pure command-line parsing for the tf tools, with upstream's rules, texts and exit codes.
 
 Nothing here touches ROS or DDS: every function maps a list of strings to a value or an error, so
-the parsing is tested without processes. ``--ros-args`` sections are split off first, as
-``rclcpp::remove_ros_arguments`` and ``rclpy.utilities.remove_ros_args`` do.
+the parsing is tested without processes. The tools split their ``--ros-args`` sections off first
+(:func:`tf_demo.transport.ros_args.split_ros_args`, as ``rclcpp::remove_ros_arguments`` does),
+and read numbers with C's rules (:func:`tf_demo.transport.params_c_numbers.c_strtod`, as
+``std::stod`` does).
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import dataclass
 from dataclasses import field
 import math
 import re
-import sys
 
 from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.ros.node_helpers import rate_error
-from tf_demo.transport import ros_args
-
-_C_FLOAT_PREFIX = re.compile(
-    r"""
-    \s*
-    (?P<number>
-        [+-]?
-        (?:
-            0[xX](?:[0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)(?:[pP][+-]?[0-9]+)?
-          | (?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?
-          | (?i:infinity|inf)
-          | (?i:nan)(?:\([0-9A-Za-z_]*\))?
-        )
-    )
-    """,
-    re.VERBOSE,
-)
-
-
-def split_ros_args(argv: Sequence[str] | None = None) -> tuple[list[str], list[str]]:
-    """
-    Split ``argv`` (default: ``sys.argv[1:]``) into (tool arguments, ROS arguments).
-
-    rcl's rules (:func:`tf_demo.transport.ros_args.split_ros_args`): every ``--ros-args``
-    section runs to the next ``--`` or the end, as in rclcpp.
-    """
-    return ros_args.split_ros_args(sys.argv[1:] if argv is None else argv)
-
-
-def parse_c_float(text: str) -> tuple[float, int] | None:
-    """
-    Parse the longest numeric prefix of ``text`` as C's ``strtod`` does.
-
-    :return: (value, characters consumed) or None when no number starts the text (leading white
-        space is skipped, as ``strtod`` does). Hex floats, ``inf`` and ``nan`` are accepted; a
-        number too large for a double gives a signed infinity (``strtod``'s ``HUGE_VAL``), one
-        too small gives 0.0: :func:`c_float_range_error` tells these apart from ``inf`` and 0.
-    """
-    match = _C_FLOAT_PREFIX.match(text)
-    if match is None:
-        return None
-    number = match.group('number')
-    body = number.lstrip('+-')
-    negative = number.startswith('-')
-    lowered = body.lower()
-    if lowered.startswith('0x'):
-        mantissa = lowered if 'p' in lowered else lowered + 'p0'
-        try:
-            value = float.fromhex(mantissa)
-        except OverflowError:
-            value = math.inf
-    elif lowered.startswith('inf'):
-        value = math.inf
-    elif lowered.startswith('nan'):
-        value = math.nan
-    else:
-        value = float(body)
-    return (-value if negative else value), match.end()
-
+from tf_demo.transport.params_c_numbers import c_strtod
+from tf_demo.transport.params_c_numbers import CDouble
 
 FLT_MAX = 3.4028234663852886e38
 """The largest finite C ``float`` (``std::stof`` refuses anything beyond it)."""
@@ -97,34 +40,22 @@ FLT_MIN = 1.1754943508222875e-38
 """The smallest normal C ``float`` (glibc's ``strtof`` reports ERANGE below it)."""
 
 
-def c_float_range_error(text: str, value: float, *, single: bool = False) -> str | None:
+def c_float_range_error(number: CDouble, *, single: bool = False) -> str | None:
     """
-    Return why ``value`` (parsed from ``text``) is out of range for ``strtod`` (or ``strtof``).
+    Return why ``number`` (what ``strtod`` read) is out of range for ``std::stod`` (``stof``).
 
-    ``std::stod``/``std::stof`` throw ``std::out_of_range`` for these; the C++ tools then abort.
-    None when the value is in range. A spelled ``inf`` and a literal zero are in range.
+    ``std::stod``/``std::stof`` throw ``std::out_of_range`` where ``strtod`` (``strtof``) sets
+    ``ERANGE``; the C++ tools then abort. None when the value is in range. A spelled ``inf`` and
+    a literal zero are in range.
     """
-    if math.isnan(value):
-        return None
-    if math.isinf(value):
-        return None if _spells_infinity(text) else 'out of range (too large)'
-    magnitude = abs(value)
-    if single and magnitude > FLT_MAX:
+    value = number.value
+    if number.out_of_range:
+        return 'out of range (too large)' if math.isinf(value) else 'out of range (too small)'
+    if single and math.isfinite(value) and abs(value) > FLT_MAX:
         return 'out of range (too large for a float)'
-    if _has_nonzero_digit(text) and (magnitude == 0.0 or (single and magnitude < FLT_MIN)):
+    if single and 0.0 < abs(value) < FLT_MIN:
         return 'out of range (too small)'
     return None
-
-
-def _has_nonzero_digit(text: str) -> bool:
-    """Whether the mantissa of the numeric literal at the start of ``text`` is not zero."""
-    match = _C_FLOAT_PREFIX.match(text)
-    if match is None:
-        return False
-    body = match.group('number').lstrip('+-').lower()
-    if body.startswith('0x'):
-        return any(c not in '0.' for c in body[2:].split('p', 1)[0])
-    return any(c in '123456789' for c in body.split('e', 1)[0])
 
 
 def whole_number(text: str, maximum: int) -> int | None:
@@ -189,15 +120,15 @@ def parse_static_transform_args(args: list[str]) -> StaticTransformArgs:
     positional: list[str] = []
 
     def number(name: str, text: str) -> float | None:
-        parsed = parse_c_float(text)
+        parsed = c_strtod(text)
         if parsed is None:
             result.error = f'Failed to parse {name} argument as float'
             return None
-        out_of_range = c_float_range_error(text, parsed[0])
+        out_of_range = c_float_range_error(parsed)
         if out_of_range is not None:
             result.error = f'Failed to parse {name} argument as float: {out_of_range}'
             return None
-        return parsed[0]
+        return parsed.value
 
     def apply(name: str, key: str, value_text: str) -> bool:
         if key in ('--frame-id', '--child-frame-id'):
@@ -270,11 +201,6 @@ def parse_static_transform_args(args: list[str]) -> StaticTransformArgs:
     result.translation = (translation[0], translation[1], translation[2])
     result.rotation = (quat[0], quat[1], quat[2], quat[3])
     return result
-
-
-def _spells_infinity(text: str) -> bool:
-    """Whether ``text`` names infinity itself (``strtod`` overflow is an error, ``inf`` is not)."""
-    return 'inf' in text.lower()
 
 
 # ---------------------------------------------------------------------------------------------
@@ -352,24 +278,24 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
     result.source_frame, result.target_frame = positional[0], positional[1]
     if len(positional) == 3:
         text = positional[2]
-        parsed = parse_c_float(text)
+        parsed = c_strtod(text)
         failure = f"Failed to convert rate argument '{text}' to a floating-point number"
         if parsed is None:
             result.error, result.exit_code = failure, 2
             return result
-        if parsed[1] != len(text):
+        if parsed.length != len(text):
             result.error, result.exit_code = failure, 3
             return result
-        out_of_range = c_float_range_error(text, parsed[0], single=True)
+        out_of_range = c_float_range_error(parsed, single=True)
         if out_of_range is not None:
             result.error, result.exit_code = f'{failure}: {out_of_range}', 2
             return result
-        problem = rate_error(parsed[0])
+        problem = rate_error(parsed.value)
         if problem is not None:
             result.error = f"echo_rate {problem}, got '{_shown(text)}'"
             result.exit_code = 2
             return result
-        result.rate_hz = parsed[0]
+        result.rate_hz = parsed.value
     return result
 
 

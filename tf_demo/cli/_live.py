@@ -13,29 +13,39 @@
 # limitations under the License.
 
 """
-The imperative shell shared by the listening tools: record tf messages, build a buffer from them.
+The imperative shell shared by the tools: run one, record tf messages, report errors.
 
-:class:`TfRecorder` subscribes to ``/tf`` and ``/tf_static`` (tf2's listener QoS) on a node and
-records every message as a :class:`~tf_demo.cli._doctor.Observation`; :func:`listen` spins the
-node for a while; :func:`buffer_from_observations` replays the records into a ``BufferCore`` for
-the tools that print tf2's own dumps (view_frames, tf_saver, tf_monitor).
+:func:`tool_main` is the ``main`` of a tool with an argparse command line and :func:`run_tool`
+runs a tool's body between ``transport.init`` and ``shutdown``. :class:`TfRecorder` subscribes
+to ``/tf`` and ``/tf_static`` (tf2's listener QoS) on a node and records every message as an
+:class:`~tf_demo.cli._observations.Observation`; :func:`listen` spins the node for a while.
 """
 
 from __future__ import annotations
 
+import argparse
 from collections.abc import Callable
 from collections.abc import Sequence
+import os
 import sys
 import threading
 import time
 from typing import Any
 
-from tf_demo.cli._doctor import Observation
-from tf_demo.cli._doctor import ObservedTransform
-from tf_demo.cli._doctor import TF_STATIC_TOPIC
-from tf_demo.cli._doctor import TF_TOPIC
+from tf_demo import transport
+from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import ObservedTransform
+from tf_demo.cli._observations import TF_STATIC_TOPIC
+from tf_demo.cli._observations import TF_TOPIC
+from tf_demo.cli._snapshot import read_snapshot
+from tf_demo.cli._snapshot import Snapshot
+from tf_demo.cli._snapshot import SnapshotError
+from tf_demo.transport import StopRequest
+from tf_demo.transport.logging import format_log_line
+from tf_demo.transport.logging import LoggingSeverity
+from tf_demo.transport.ros_args import ROS_ARGS_USAGE
+from tf_demo.transport.ros_args import split_ros_args
 
-RECORDER_AUTHORITY = 'default_authority'
 MAX_OBSERVATIONS = 1_000_000
 
 
@@ -148,39 +158,12 @@ class TfRecorder:
 
 def listen(node: Any, seconds: float) -> None:
     """Spin ``node`` for ``seconds`` of wall time (as view_frames does)."""
-    from tf_demo import transport
-
     deadline = time.monotonic() + max(0.0, seconds)
     while transport.ok():
         remaining = deadline - time.monotonic()
         if remaining <= 0:
             break
         transport.spin_once(node, timeout_sec=min(0.1, remaining))
-
-
-def buffer_from_observations(
-    observations: Sequence[Observation], cache_time_ns: int = 10**10
-) -> Any:
-    """Replay ``observations`` into a new ``BufferCore`` (rejected transforms are skipped)."""
-    from tf_demo.core.buffer_core import BufferCore
-
-    def quiet(level: int, text: str) -> None:
-        del level, text
-
-    core = BufferCore(cache_time_ns, log=quiet)
-    for observation in sorted(observations, key=lambda o: o.receive_ns):
-        is_static = observation.topic == TF_STATIC_TOPIC
-        for transform in observation.transforms:
-            core.set_transform(
-                transform.parent,
-                transform.child,
-                transform.stamp_ns,
-                transform.translation,
-                transform.rotation,
-                RECORDER_AUTHORITY,
-                is_static,
-            )
-    return core
 
 
 def print_error(tool: str, text: str) -> None:
@@ -190,15 +173,46 @@ def print_error(tool: str, text: str) -> None:
 
 def log_unnamed(severity_name: str, text: str) -> None:
     """Log like ``RCUTILS_LOG_<SEVERITY>`` without a logger name: ``[WARN] [t] []: text``."""
-    from tf_demo.transport.logging import format_log_line
-    from tf_demo.transport.logging import LoggingSeverity
-
     line = format_log_line(LoggingSeverity[severity_name], '', text, time.time_ns())
     print(line, file=sys.stderr, flush=True)
 
 
 class ToolError(Exception):
     """A problem the tool reports as one line on stderr before exiting with code 1."""
+
+
+def tool_main(
+    tool: str,
+    args: Sequence[str] | None,
+    parser: argparse.ArgumentParser,
+    *,
+    options_error: Callable[[argparse.Namespace], str | None],
+    live: Callable[[argparse.Namespace], int],
+    from_snapshot: Callable[[argparse.Namespace, Snapshot], int] | None = None,
+    bad_snapshot: int = 1,
+) -> int:
+    """
+    Run a tool with an argparse command line: ``args`` (default: ``sys.argv[1:]``) to exit code.
+
+    ``--ros-args`` sections are split off and the rest parsed by ``parser``; options that
+    ``options_error`` refuses print one line and give 2. With ``--snapshot FILE`` (a tool with
+    ``from_snapshot``) the file is read and handed to it instead of listening; a bad file (or a
+    :class:`ToolError`) prints one line and gives ``bad_snapshot``. Else ``live`` runs with
+    :func:`run_tool`.
+    """
+    tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
+    options = parser.parse_args(tool_args)
+    problem = options_error(options)
+    if problem is not None:
+        print_error(tool, problem)
+        return 2
+    if from_snapshot is not None and options.snapshot is not None:
+        try:
+            return from_snapshot(options, read_snapshot(options.snapshot))
+        except (SnapshotError, ToolError) as error:
+            print_error(tool, str(error))
+            return bad_snapshot
+    return run_tool(tool, ros_args, lambda: live(options))
 
 
 def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int:
@@ -210,11 +224,9 @@ def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int
     (:class:`tf_demo.transport.StopRequest`), so a double Ctrl-C cannot skip the clean-up. A
     :class:`ToolError` prints one line and gives 1.
     """
-    from tf_demo import transport
-
     # Installed before init: rclpy.init puts its own handlers on top, which call these and
     # then wake the executors (a blocked transport.spin() would not wake otherwise).
-    stop = transport.StopRequest(interrupt=True)
+    stop = StopRequest(interrupt=True)
     stop.install()
     try:
         return _run_tool_installed(tool, ros_args, body, stop)
@@ -225,12 +237,9 @@ def run_tool(tool: str, ros_args: Sequence[str], body: Callable[[], int]) -> int
 
 
 def _run_tool_installed(
-    tool: str, ros_args: Sequence[str], body: Callable[[], int], stop: Any
+    tool: str, ros_args: Sequence[str], body: Callable[[], int], stop: StopRequest
 ) -> int:
     """:func:`run_tool` with its signal handlers in place."""
-    from tf_demo import transport
-    from tf_demo.transport.ros_args import ROS_ARGS_USAGE
-
     try:
         transport.init(args=[tool, *ros_args])
     except (transport.RosArgsError, transport.BackendError) as error:
@@ -243,8 +252,6 @@ def _run_tool_installed(
         return 0
     except BrokenPipeError:
         # The reader went away (``tf_echo a b | head``): stop quietly, like a C++ tool on SIGPIPE.
-        import os
-
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except ToolError as error:

@@ -65,8 +65,8 @@ MAX_FILE_BYTES = 4 * 1024 * 1024
 MAX_TRANSFORMS = 10_000
 MAX_FRAME_ID_LENGTH = 1024
 MAX_NESTING = 16
-_TOP_KEYS = (SCHEMA_KEY, 'recorded_at', 'transform_count', 'transforms')
-_ENTRY_KEYS = (
+TOP_KEYS = (SCHEMA_KEY, 'recorded_at', 'transform_count', 'transforms')
+ENTRY_KEYS = (
     'parent',
     'child',
     'translation',
@@ -315,7 +315,7 @@ class _Reader:
 
 def _entry(reader: _Reader, node: yaml.Node, index: int) -> SnapshotTransform:
     what = f'transforms[{index}]'
-    fields = reader.mapping(node, what, _ENTRY_KEYS)
+    fields = reader.mapping(node, what, ENTRY_KEYS)
     for key in _REQUIRED_ENTRY_KEYS:
         if key not in fields:
             raise reader.fail(node, f'{what} has no {key!r}')
@@ -434,7 +434,7 @@ def parse_snapshot(text: str, source: str = '<snapshot>') -> Snapshot:
     reader = _Reader(source)
     if root is None:
         raise reader.fail(None, f'empty file (expected a mapping starting with {SCHEMA_KEY}: 1)')
-    top = reader.mapping(root, 'the file', _TOP_KEYS)
+    top = reader.mapping(root, 'the file', TOP_KEYS)
     if SCHEMA_KEY not in top:
         raise reader.fail(root, f'not a tf_demo snapshot: missing {SCHEMA_KEY!r}')
     version = reader.integer(top[SCHEMA_KEY], SCHEMA_KEY)

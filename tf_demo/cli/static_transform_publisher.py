@@ -35,10 +35,10 @@ import sys
 from typing import Any
 
 from tf_demo.cli._args import parse_static_transform_args
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._live import log_unnamed
 from tf_demo.cli.formatting import format_static_info
 from tf_demo.cli.formatting import STATIC_USAGE
+from tf_demo.transport.ros_args import split_ros_args
 
 TOOL = 'static_transform_publisher'
 
@@ -120,7 +120,7 @@ def make_node(
 
 def main(args: list[str] | None = None) -> int:
     """Run static_transform_publisher with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
+    tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
     parsed = parse_static_transform_args(tool_args)
     for warning in parsed.warnings:
         log_unnamed('WARN', warning)

@@ -45,6 +45,7 @@ from typing import IO
 
 from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import transform_stamped_args
+from tf_demo.transport.ros_args import split_ros_args
 
 DEMO_NODES = ('static_tf_pub', 'dynamic_tf_pub', 'tf_listener')
 ROBOT_XACRO = 'mobile_robot.urdf.xacro'
@@ -301,8 +302,6 @@ def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Entry point: ``tf_demo_live [--robot] [--duration S] [--rate HZ] [--target/--source F]``."""
-    from tf_demo.cli._args import split_ros_args
-
     argv = list(sys.argv[1:] if args is None else args)
     tool_args, ros_args = split_ros_args(argv)
     options = parse_arguments(tool_args)

@@ -36,23 +36,20 @@ import sys
 import threading
 from typing import Any
 
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._doctor import diagnose
-from tf_demo.cli._doctor import exit_code
-from tf_demo.cli._doctor import format_report
-from tf_demo.cli._doctor import format_report_json
-from tf_demo.cli._doctor import Observation
-from tf_demo.cli._doctor import observations_from_snapshot
-from tf_demo.cli._doctor import RobotInfo
-from tf_demo.cli._doctor import RobotJoint
-from tf_demo.cli._doctor import summarize
+from tf_demo.cli._doctor_report import exit_code
+from tf_demo.cli._doctor_report import format_report
+from tf_demo.cli._doctor_report import format_report_json
+from tf_demo.cli._doctor_report import summarize
+from tf_demo.cli._doctor_robot import RobotInfo
+from tf_demo.cli._doctor_robot import RobotJoint
 from tf_demo.cli._live import listen
-from tf_demo.cli._live import print_error
-from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
-from tf_demo.cli._snapshot import read_snapshot
-from tf_demo.cli._snapshot import SnapshotError
+from tf_demo.cli._live import tool_main
+from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import observations_from_snapshot
+from tf_demo.cli._snapshot import Snapshot
 
 TOOL = 'tf_doctor'
 
@@ -206,28 +203,28 @@ def options_error(options: argparse.Namespace) -> str | None:
     return wait_time_error(options.wait_time)
 
 
+def _report_snapshot(options: argparse.Namespace, snapshot: Snapshot) -> int:
+    """Diagnose the ``--snapshot`` file instead of listening (no timing checks)."""
+    return _report(
+        options,
+        observations_from_snapshot(snapshot),
+        options.snapshot,
+        timing=False,
+        listen_ns=0,
+    )
+
+
 def main(args: list[str] | None = None) -> int:
     """Run tf_doctor with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
-    options = build_parser().parse_args(tool_args)
-    problem = options_error(options)
-    if problem is not None:
-        print_error(TOOL, problem)
-        return 2
-    if options.snapshot is not None:
-        try:
-            snapshot = read_snapshot(options.snapshot)
-        except SnapshotError as error:
-            print_error(TOOL, str(error))
-            return 2
-        return _report(
-            options,
-            observations_from_snapshot(snapshot),
-            options.snapshot,
-            timing=False,
-            listen_ns=0,
-        )
-    return run_tool(TOOL, ros_args, lambda: _listen_and_report(options))
+    return tool_main(
+        TOOL,
+        args,
+        build_parser(),
+        options_error=options_error,
+        live=_listen_and_report,
+        from_snapshot=_report_snapshot,
+        bad_snapshot=2,
+    )
 
 
 if __name__ == '__main__':

@@ -34,7 +34,6 @@ from typing import Any
 
 from tf_demo.cli._args import EchoArgs
 from tf_demo.cli._args import parse_echo_args
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._live import run_tool
 from tf_demo.cli.formatting import ECHO_USAGE
 from tf_demo.cli.formatting import format_echo_failure
@@ -42,6 +41,7 @@ from tf_demo.cli.formatting import format_echo_failure_json
 from tf_demo.cli.formatting import format_echo_json
 from tf_demo.cli.formatting import format_echo_transform
 from tf_demo.cli.formatting import format_echo_waiting
+from tf_demo.transport.ros_args import split_ros_args
 
 TOOL = 'tf2_echo'
 WAITING_LOG_PERIOD_S = 1.0
@@ -129,7 +129,7 @@ def _echo(options: EchoArgs) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_echo with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
+    tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
     options = parse_echo_args(tool_args)
     if options.show_usage:
         _write(ECHO_USAGE)  # upstream's usage only: stderr stays empty, as tf2_echo's

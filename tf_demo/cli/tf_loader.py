@@ -27,12 +27,12 @@ from __future__ import annotations
 import argparse
 import sys
 
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._live import print_error
 from tf_demo.cli._live import run_tool
 from tf_demo.cli._snapshot import read_snapshot
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotError
+from tf_demo.transport.ros_args import split_ros_args
 
 TOOL = 'tf_loader'
 
@@ -77,7 +77,7 @@ def _publish(snapshot: Snapshot, source: str) -> int:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_loader with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
+    tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
     options = build_parser().parse_args(tool_args)
     try:
         snapshot = read_snapshot(options.file)

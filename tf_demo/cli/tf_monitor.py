@@ -33,17 +33,22 @@ import sys
 import time
 from typing import Any
 
+from tf_demo import transport
 from tf_demo.cli._args import count_argument
-from tf_demo.cli._args import split_ros_args
-from tf_demo.cli._doctor import Observation
+from tf_demo.cli._live import log_unnamed
 from tf_demo.cli._live import print_error
-from tf_demo.cli._live import RECORDER_AUTHORITY
 from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
+from tf_demo.cli._observations import add_observation
+from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import quiet_log
 from tf_demo.cli.formatting import format_echo_waiting
 from tf_demo.cli.formatting import format_monitor_broadcasters
 from tf_demo.cli.formatting import format_monitor_frames
 from tf_demo.cli.formatting import format_monitor_header
+from tf_demo.core.buffer_core import BufferCore
+from tf_demo.core.exceptions import TransformException
+from tf_demo.transport.ros_args import split_ros_args
 
 TOOL = 'tf2_monitor'
 NO_AUTHORITY = '<no authority available>'
@@ -90,8 +95,6 @@ def _print_report(
 
 
 def _spin_for(node: Any, seconds: float) -> None:
-    from tf_demo import transport
-
     deadline = time.monotonic() + seconds
     while transport.ok():
         remaining = deadline - time.monotonic()
@@ -101,27 +104,14 @@ def _spin_for(node: Any, seconds: float) -> None:
 
 
 def _monitor(options: argparse.Namespace) -> int:
-    from tf_demo import transport
-    from tf_demo.core.buffer_core import BufferCore
-    from tf_demo.core.exceptions import TransformException
-
     node = transport.create_node('tf2_monitor_main')
     clock = node.get_clock()
     stats = DelayStats()
-    core = BufferCore(log=lambda level, text: None)
+    core = BufferCore(log=quiet_log)
 
     def on_message(observation: Observation) -> None:
         stats.add(observation, observation.receive_ns / 1e9)
-        for t in observation.transforms:
-            core.set_transform(
-                t.parent,
-                t.child,
-                t.stamp_ns,
-                t.translation,
-                t.rotation,
-                RECORDER_AUTHORITY,
-                observation.topic == '/tf_static',
-            )
+        add_observation(core, observation)
 
     try:
         TfRecorder(node, on_message=on_message)
@@ -130,8 +120,7 @@ def _monitor(options: argparse.Namespace) -> int:
             framea, frameb = options.frames
             last_log = -1.0
             while transport.ok():
-                debug: Any = core.can_transform(framea, frameb, 0, return_debug_tuple=True)
-                ready, reason = debug
+                ready, reason = core.can_transform(framea, frameb, 0, return_debug_tuple=True)
                 if ready:
                     break
                 if time.monotonic() - last_log >= 1.0:
@@ -191,19 +180,10 @@ def options_error(options: argparse.Namespace) -> str | None:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_monitor with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
+    tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
     options = build_parser().parse_args(tool_args)
     if len(options.frames) not in (0, 2):
-        from tf_demo.transport.logging import format_log_line
-        from tf_demo.transport.logging import LoggingSeverity
-
-        line = format_log_line(
-            LoggingSeverity.INFO,
-            '',
-            'TF_Monitor: usage: tf2_monitor framea frameb',
-            time.time_ns(),
-        )
-        print(line, file=sys.stderr, flush=True)
+        log_unnamed('INFO', 'TF_Monitor: usage: tf2_monitor framea frameb')
         return 255
     problem = options_error(options)
     if problem is not None:

@@ -33,18 +33,15 @@ import argparse
 from collections.abc import Sequence
 import math
 import sys
-from typing import Any
 
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._args import wait_time_error
-from tf_demo.cli._doctor import Observation
-from tf_demo.cli._doctor import TF_STATIC_TOPIC
-from tf_demo.cli._live import buffer_from_observations
 from tf_demo.cli._live import listen
-from tf_demo.cli._live import print_error
-from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
+from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
+from tf_demo.cli._observations import buffer_from_observations
+from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import TF_STATIC_TOPIC
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotTransform
 from tf_demo.cli._snapshot import write_snapshot
@@ -162,18 +159,13 @@ def flatten(observations: Sequence[Observation], frames: Sequence[str]) -> list[
     result = []
     for frame in frames[1:]:
         try:
-            found: Any = core.lookup_transform(frames[0], frame, 0)
+            found = core.lookup_transform(frames[0], frame, 0)
         except TransformException as error:
             msg = f'cannot save {frames[0]}→{frame}: {error}'
             raise ToolError(msg) from None
         result.append(
             SnapshotTransform(
-                frames[0],
-                frame,
-                tuple(float(v) for v in found.translation),  # type: ignore[arg-type]
-                tuple(float(v) for v in found.rotation),  # type: ignore[arg-type]
-                True,
-                int(found.stamp_ns) or None,
+                frames[0], frame, found.translation, found.rotation, True, found.stamp_ns or None
             )
         )
     return result
@@ -214,13 +206,9 @@ def options_error(options: argparse.Namespace) -> str | None:
 
 def main(args: list[str] | None = None) -> int:
     """Run tf_saver with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
-    options = build_parser().parse_args(tool_args)
-    problem = options_error(options)
-    if problem is not None:
-        print_error(TOOL, problem)
-        return 2
-    return run_tool(TOOL, ros_args, lambda: _record_and_save(options))
+    return tool_main(
+        TOOL, args, build_parser(), options_error=options_error, live=_record_and_save
+    )
 
 
 if __name__ == '__main__':

@@ -31,17 +31,14 @@ import sys
 import time
 from typing import Any
 
-from tf_demo.cli._args import split_ros_args
 from tf_demo.cli._args import wait_time_error
-from tf_demo.cli._live import buffer_from_observations
 from tf_demo.cli._live import listen
-from tf_demo.cli._live import print_error
-from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
+from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
+from tf_demo.cli._observations import buffer_from_observations
 from tf_demo.cli._snapshot import frames_yaml_data
-from tf_demo.cli._snapshot import read_snapshot
-from tf_demo.cli._snapshot import SnapshotError
+from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli.formatting import generate_dot
 from tf_demo.core.files import OutputFileError
 from tf_demo.core.files import write_text_atomically
@@ -142,28 +139,24 @@ def options_error(options: argparse.Namespace) -> str | None:
     return wait_time_error(options.wait_time)
 
 
+def _draw_snapshot(options: argparse.Namespace, snapshot: Snapshot) -> int:
+    """Draw the ``--snapshot`` file instead of listening (stamped when it was recorded)."""
+    stamp = snapshot.recorded_at_ns or time.time_ns()
+    return write_graph(
+        _StderrLogger(), frames_yaml_data(snapshot), divmod(stamp, 1_000_000_000), options.output
+    )
+
+
 def main(args: list[str] | None = None) -> int:
     """Run view_frames with ``args`` (default: ``sys.argv[1:]``)."""
-    tool_args, ros_args = split_ros_args(args)
-    options = build_parser().parse_args(tool_args)
-    problem = options_error(options)
-    if problem is not None:
-        print_error(TOOL, problem)
-        return 2
-    if options.snapshot is not None:
-        try:
-            snapshot = read_snapshot(options.snapshot)
-            stamp = snapshot.recorded_at_ns or time.time_ns()
-            return write_graph(
-                _StderrLogger(),
-                frames_yaml_data(snapshot),
-                divmod(stamp, 1_000_000_000),
-                options.output,
-            )
-        except (SnapshotError, ToolError) as error:
-            print_error(TOOL, str(error))
-            return 1
-    return run_tool(TOOL, ros_args, lambda: _listen_and_draw(options))
+    return tool_main(
+        TOOL,
+        args,
+        build_parser(),
+        options_error=options_error,
+        live=_listen_and_draw,
+        from_snapshot=_draw_snapshot,
+    )
 
 
 if __name__ == '__main__':
