@@ -269,6 +269,20 @@ class _Builder:
 
     def align(self, alignment: int) -> None:
         """Make the next item start at a multiple of ``alignment``."""
+        if self.string_pending():
+            self.flush()
+        if alignment == 1 or self.pad_run_to(alignment):
+            return
+        self.flush()
+        self.emit(self.padding(alignment))
+        self.known = alignment
+
+    def string_pending(self) -> bool:
+        """Tell whether the pending run holds a string (its padding is not known statically)."""
+        raise NotImplementedError
+
+    def padding(self, alignment: int) -> str:
+        """Return the statement that skips (reads) or writes the padding to ``alignment``."""
         raise NotImplementedError
 
     def flush(self) -> None:
@@ -353,15 +367,13 @@ class _DecoderBuilder(_Builder):
             self.emit(line)
         self.builds = []
 
-    def align(self, alignment: int) -> None:
-        """Make the next read start at a multiple of ``alignment``."""
-        if self.dynamic is not None:
-            self.flush()
-        if alignment == 1 or self.pad_run_to(alignment):
-            return
-        self.flush()
-        self.emit(f'pos += (4 - pos) & {alignment - 1}')
-        self.known = alignment
+    def string_pending(self) -> bool:
+        """Tell whether a string heads the pending run."""
+        return self.dynamic is not None
+
+    def padding(self, alignment: int) -> str:
+        """Return the statement that skips the padding to ``alignment``."""
+        return f'pos += (4 - pos) & {alignment - 1}'
 
     def primitive(self, base: str) -> str:
         """Read one primitive into a new local; return its name."""
@@ -470,7 +482,7 @@ class _DecoderBuilder(_Builder):
         self.emit(f'if {count}:')
         self.indent += 1
         if prim.size > entry:
-            self.emit(f'pos += (4 - pos) & {prim.size - 1}')
+            self.emit(self.padding(prim.size))
         end = self.name('e')
         self.emit(f'{end} = pos + {count} * {prim.size}')
         self.emit(f'if {end} > len(buf):')
@@ -569,15 +581,13 @@ class _EncoderBuilder(_Builder):
         self.settle()
         self.layout = []
 
-    def align(self, alignment: int) -> None:
-        """Make the next write start at a multiple of ``alignment``."""
-        if self.strings:
-            self.flush()
-        if alignment == 1 or self.pad_run_to(alignment):
-            return
-        self.flush()
-        self.emit(f'out += _ZEROS[(4 - len(out)) & {alignment - 1}]')
-        self.known = alignment
+    def string_pending(self) -> bool:
+        """Tell whether the pending run holds strings."""
+        return bool(self.strings)
+
+    def padding(self, alignment: int) -> str:
+        """Return the statement that writes the padding to ``alignment``."""
+        return f'out += _ZEROS[(4 - len(out)) & {alignment - 1}]'
 
     def primitive(self, base: str, expr: str) -> None:
         """Write one primitive given by the Python expression ``expr``."""
@@ -649,7 +659,7 @@ class _EncoderBuilder(_Builder):
             self.emit(f'if len({sequence}):')
             self.indent += 1
             if prim.size > entry:
-                self.emit(f'out += _ZEROS[(4 - len(out)) & {prim.size - 1}]')
+                self.emit(self.padding(prim.size))
             if prim.array_code:
                 converted = self.name('r')
                 self.emit(f'{converted} = _array({prim.array_code!r}, {sequence})')
