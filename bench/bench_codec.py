@@ -19,8 +19,6 @@ Run: ``.venv/bin/python bench/bench_codec.py [--repeat N]``. Prints CPU microsec
 of this process (minimum and median over N runs, for a shared, loaded machine) and the speed-up
 over IdlStruct (minimum against minimum). The issue's target: encode plus decode of a 50-transform
 TFMessage within 100 us ("encode + decode" times one ``deserialize(serialize(m))`` per call).
-
-No ``from __future__ import annotations``: cyclonedds reads the annotations at class creation.
 """
 
 import argparse
@@ -35,13 +33,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # tf_demo from 
 # The cyclonedds IdlStruct twins of the ROS types, shared with test/msgs.
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / 'test' / 'msgs'))
 
-from cyclonedds_reference_types import Header_
-from cyclonedds_reference_types import Quaternion_
+from cyclonedds_reference_types import idl_tf_message
 from cyclonedds_reference_types import TFMessage_
-from cyclonedds_reference_types import Time_
-from cyclonedds_reference_types import Transform_
-from cyclonedds_reference_types import TransformStamped_
-from cyclonedds_reference_types import Vector3_
 from tf_demo.msgs import cdr
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.geometry_msgs import TransformStamped
@@ -63,29 +56,7 @@ def make_messages(count: int) -> tuple[TFMessage, TFMessage_]:
             for i in range(count)
         ]
     )
-    theirs = TFMessage_(
-        [
-            TransformStamped_(
-                Header_(Time_(t.header.stamp.sec, t.header.stamp.nanosec), t.header.frame_id),
-                t.child_frame_id,
-                Transform_(
-                    Vector3_(
-                        t.transform.translation.x,
-                        t.transform.translation.y,
-                        t.transform.translation.z,
-                    ),
-                    Quaternion_(
-                        t.transform.rotation.x,
-                        t.transform.rotation.y,
-                        t.transform.rotation.z,
-                        t.transform.rotation.w,
-                    ),
-                ),
-            )
-            for t in ours.transforms
-        ]
-    )
-    return ours, theirs
+    return ours, idl_tf_message(ours)
 
 
 def times_us(function: Callable[[], object], number: int, repeat: int) -> tuple[float, float]:

@@ -15,8 +15,10 @@
 """
 cyclonedds-python ``IdlStruct`` twins of the ROS types the codec tests and benchmark compare with.
 
-Final structs with the ROS DDS type names, as rmw_cyclonedds declares them. No
-``from __future__ import annotations``: cyclonedds reads the annotations at class creation.
+Final structs with the ROS DDS type names, as rmw_cyclonedds declares them, declared here by hand
+(not from tf_demo's schema table, so that they check it), and the conversions of our messages
+into them. No ``from __future__ import annotations``: cyclonedds reads the annotations at class
+creation.
 """
 
 from dataclasses import dataclass
@@ -24,6 +26,9 @@ from dataclasses import dataclass
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
 import cyclonedds.idl.types as idl
+from tf_demo.msgs.sensor_msgs import JointState
+from tf_demo.msgs.std_msgs import Header
+from tf_demo.msgs.tf2_msgs import TFMessage
 
 
 @dataclass
@@ -86,3 +91,45 @@ class JointState_(IdlStruct, typename='sensor_msgs::msg::dds_::JointState_'):  #
     position: idl.sequence[idl.float64]
     velocity: idl.sequence[idl.float64]
     effort: idl.sequence[idl.float64]
+
+
+def idl_header(header: Header) -> Header_:
+    """Return the twin of our Header."""
+    return Header_(Time_(header.stamp.sec, header.stamp.nanosec), header.frame_id)
+
+
+def idl_tf_message(message: TFMessage) -> TFMessage_:
+    """Return the twin of our TFMessage."""
+    return TFMessage_(
+        [
+            TransformStamped_(
+                idl_header(t.header),
+                t.child_frame_id,
+                Transform_(
+                    Vector3_(
+                        t.transform.translation.x,
+                        t.transform.translation.y,
+                        t.transform.translation.z,
+                    ),
+                    Quaternion_(
+                        t.transform.rotation.x,
+                        t.transform.rotation.y,
+                        t.transform.rotation.z,
+                        t.transform.rotation.w,
+                    ),
+                ),
+            )
+            for t in message.transforms
+        ]
+    )
+
+
+def idl_joint_state(message: JointState) -> JointState_:
+    """Return the twin of our JointState."""
+    return JointState_(
+        idl_header(message.header),
+        list(message.name),
+        list(message.position),
+        list(message.velocity),
+        list(message.effort),
+    )

@@ -50,108 +50,70 @@ def h(text: str) -> bytes:
     return bytes.fromhex(text)
 
 
-def f64(value: float) -> bytes:
-    """Return ``value`` as a little-endian float64."""
-    return pack('<d', value)
+def f64(*values: float) -> bytes:
+    """Return ``values`` as little-endian float64s."""
+    return pack(f'<{len(values)}d', *values)
 
 
+# Each string is its uint32 length (NUL included), its bytes and NUL, then the padding before
+# the next item: a uint32 is 4-aligned, a float64 8-aligned in XCDR1.
 TF_ONE = b''.join(
     [
         h('00 01 00 00'),  # header: encapsulation CDR_LE (00 01), options 00 00
         h('01 00 00 00'),  # off 0: transforms: sequence length 1
-        h('01 00 00 00'),  # off 4: [0].header.stamp.sec = 1
-        h('02 00 00 00'),  # off 8: [0].header.stamp.nanosec = 2
-        h('0a 00 00 00'),  # off 12: [0].header.frame_id: length 10 (NUL included)
-        b'base_link\x00',  # off 16: [0].header.frame_id = 'base_link' + NUL
-        h('00 00'),  # off 26: padding: the next uint32 is 4-aligned
-        h('0c 00 00 00'),  # off 28: [0].child_frame_id: length 12
-        b'camera_link\x00',  # off 32: [0].child_frame_id = 'camera_link' + NUL
-        h('00 00 00 00'),  # off 44: padding: float64 is 8-aligned in XCDR1
-        f64(0.5),  # off 48: [0].transform.translation.x = 0.5
-        f64(0.0),  # off 56: [0].transform.translation.y = 0.0
-        f64(0.2),  # off 64: [0].transform.translation.z = 0.2
-        f64(0.0),  # off 72: [0].transform.rotation.x = 0.0
-        f64(0.0),  # off 80: [0].transform.rotation.y = 0.0
-        f64(0.0),  # off 88: [0].transform.rotation.z = 0.0
-        f64(1.0),  # off 96: [0].transform.rotation.w = 1.0
+        h('01 00 00 00 02 00 00 00'),  # off 4: [0].header.stamp: sec = 1, nanosec = 2
+        # off 12: [0].header.frame_id: length 10, 'base_link' + NUL, 2 bytes of padding at 26
+        h('0a 00 00 00') + b'base_link\x00' + h('00 00'),
+        # off 28: [0].child_frame_id: length 12, 'camera_link' + NUL, 4 bytes of padding at 44
+        h('0c 00 00 00') + b'camera_link\x00' + h('00 00 00 00'),
+        f64(0.5, 0.0, 0.2),  # off 48: [0].transform.translation (x, y, z)
+        f64(0.0, 0.0, 0.0, 1.0),  # off 72: [0].transform.rotation (x, y, z, w)
     ]
 )
 TF_THREE = b''.join(
     [
         h('00 01 00 00'),  # header: encapsulation CDR_LE (00 01), options 00 00
         h('03 00 00 00'),  # off 0: transforms: sequence length 3
-        h('00 f1 53 65'),  # off 4: [0].header.stamp.sec = 1700000000
-        h('15 cd 5b 07'),  # off 8: [0].header.stamp.nanosec = 123456789
-        h('04 00 00 00'),  # off 12: [0].header.frame_id: length 4 (NUL included)
-        b'map\x00',  # off 16: [0].header.frame_id = 'map' + NUL
-        h('05 00 00 00'),  # off 20: [0].child_frame_id: length 5
-        b'odom\x00',  # off 24: [0].child_frame_id = 'odom' + NUL
-        h('00 00 00'),  # off 29: padding: float64 is 8-aligned in XCDR1
-        f64(1.25),  # off 32: [0].transform.translation.x = 1.25
-        f64(-2.5),  # off 40: [0].transform.translation.y = -2.5
-        f64(0.0),  # off 48: [0].transform.translation.z = 0.0
-        f64(0.0),  # off 56: [0].transform.rotation.x = 0.0
-        f64(0.0),  # off 64: [0].transform.rotation.y = 0.0
-        f64(0.3826834323650898),  # off 72: [0].transform.rotation.z = 0.3826834323650898
-        f64(0.9238795325112867),  # off 80: [0].transform.rotation.w = 0.9238795325112867
-        h('00 f1 53 65'),  # off 88: [1].header.stamp.sec = 1700000000
-        h('15 cd 5b 07'),  # off 92: [1].header.stamp.nanosec = 123456789
-        h('05 00 00 00'),  # off 96: [1].header.frame_id: length 5 (NUL included)
-        b'odom\x00',  # off 100: [1].header.frame_id = 'odom' + NUL
-        h('00 00 00'),  # off 105: padding: the next uint32 is 4-aligned
-        h('0f 00 00 00'),  # off 108: [1].child_frame_id: length 15
-        b'base_footprint\x00',  # off 112: [1].child_frame_id = 'base_footprint' + NUL
-        h('00'),  # off 127: padding: float64 is 8-aligned in XCDR1
-        f64(0.1),  # off 128: [1].transform.translation.x = 0.1
-        f64(0.2),  # off 136: [1].transform.translation.y = 0.2
-        f64(0.0),  # off 144: [1].transform.translation.z = 0.0
-        f64(0.0),  # off 152: [1].transform.rotation.x = 0.0
-        f64(0.0),  # off 160: [1].transform.rotation.y = 0.0
-        f64(-0.7071067811865476),  # off 168: [1].transform.rotation.z = -0.7071067811865476
-        f64(0.7071067811865476),  # off 176: [1].transform.rotation.w = 0.7071067811865476
-        h('00 00 00 00'),  # off 184: [2].header.stamp.sec = 0
-        h('00 00 00 00'),  # off 188: [2].header.stamp.nanosec = 0
-        h('0f 00 00 00'),  # off 192: [2].header.frame_id: length 15 (NUL included)
-        b'base_footprint\x00',  # off 196: [2].header.frame_id = 'base_footprint' + NUL
-        h('00'),  # off 211: padding: the next uint32 is 4-aligned
-        h('2c 00 00 00'),  # off 212: [2].child_frame_id: length 44
-        b'a_frame_with_a_rather_long_name_for_padding\x00',  # off 216: [2].child_frame_id + NUL
-        h('00 00 00 00'),  # off 260: padding: float64 is 8-aligned in XCDR1
-        f64(-1e-09),  # off 264: [2].transform.translation.x = -1e-09
-        f64(1000000000.0),  # off 272: [2].transform.translation.y = 1000000000.0
-        f64(3.141592653589793),  # off 280: [2].transform.translation.z = 3.141592653589793
-        f64(0.5),  # off 288: [2].transform.rotation.x = 0.5
-        f64(0.5),  # off 296: [2].transform.rotation.y = 0.5
-        f64(0.5),  # off 304: [2].transform.rotation.z = 0.5
-        f64(0.5),  # off 312: [2].transform.rotation.w = 0.5
+        h('00 f1 53 65 15 cd 5b 07'),  # off 4: [0].header.stamp = 1700000000 s, 123456789 ns
+        h('04 00 00 00') + b'map\x00',  # off 12: [0].header.frame_id: length 4, 'map' + NUL
+        # off 20: [0].child_frame_id: length 5, 'odom' + NUL, 3 bytes of padding at 29
+        h('05 00 00 00') + b'odom\x00' + h('00 00 00'),
+        f64(1.25, -2.5, 0.0),  # off 32: [0].transform.translation
+        # off 56: [0].transform.rotation: 45 degrees about z
+        f64(0.0, 0.0, 0.3826834323650898, 0.9238795325112867),
+        h('00 f1 53 65 15 cd 5b 07'),  # off 88: [1].header.stamp = 1700000000 s, 123456789 ns
+        # off 96: [1].header.frame_id: length 5, 'odom' + NUL, 3 bytes of padding at 105
+        h('05 00 00 00') + b'odom\x00' + h('00 00 00'),
+        # off 108: [1].child_frame_id: length 15, 'base_footprint' + NUL, 1 byte of padding at 127
+        h('0f 00 00 00') + b'base_footprint\x00' + h('00'),
+        f64(0.1, 0.2, 0.0),  # off 128: [1].transform.translation
+        # off 152: [1].transform.rotation: -90 degrees about z
+        f64(0.0, 0.0, -0.7071067811865476, 0.7071067811865476),
+        h('00 00 00 00 00 00 00 00'),  # off 184: [2].header.stamp = 0 s, 0 ns
+        # off 192: [2].header.frame_id: length 15, 'base_footprint' + NUL, 1 byte of padding at 211
+        h('0f 00 00 00') + b'base_footprint\x00' + h('00'),
+        # off 212: [2].child_frame_id: length 44, the name + NUL, 4 bytes of padding at 260
+        h('2c 00 00 00') + b'a_frame_with_a_rather_long_name_for_padding\x00' + h('00 00 00 00'),
+        f64(-1e-09, 1000000000.0, 3.141592653589793),  # off 264: [2].transform.translation
+        f64(0.5, 0.5, 0.5, 0.5),  # off 288: [2].transform.rotation
     ]
 )
 JOINT_STATE = b''.join(
     [
         h('00 01 00 00'),  # header: encapsulation CDR_LE (00 01), options 00 00
-        h('2a 00 00 00'),  # off 0: header.stamp.sec = 42
-        h('07 00 00 00'),  # off 4: header.stamp.nanosec = 7
-        h('01 00 00 00'),  # off 8: header.frame_id: length 1
-        b'\x00',  # off 12: header.frame_id = '' (just the NUL)
-        h('00 00 00'),  # off 13: padding to 4
+        h('2a 00 00 00 07 00 00 00'),  # off 0: header.stamp: sec = 42, nanosec = 7
+        # off 8: header.frame_id: length 1, '' (just the NUL), 3 bytes of padding at 13
+        h('01 00 00 00') + b'\x00' + h('00 00 00'),
         h('03 00 00 00'),  # off 16: name: sequence length 3
-        h('09 00 00 00'),  # off 20: name[0]: length 9
-        b'shoulder\x00',  # off 24: name[0] = 'shoulder'
-        h('00 00 00'),  # off 33: padding to 4
-        h('06 00 00 00'),  # off 36: name[1]: length 6
-        b'elbow\x00',  # off 40: name[1] = 'elbow'
-        h('00 00'),  # off 46: padding to 4
-        h('08 00 00 00'),  # off 48: name[2]: length 8
-        b'wrist_1\x00',  # off 52: name[2] = 'wrist_1' (ends 4-aligned)
+        # off 20: name[0]: length 9, 'shoulder' + NUL, 3 bytes of padding at 33
+        h('09 00 00 00') + b'shoulder\x00' + h('00 00 00'),
+        h('06 00 00 00') + b'elbow\x00' + h('00 00'),  # off 36: name[1], 2 bytes of padding
+        h('08 00 00 00') + b'wrist_1\x00',  # off 48: name[2] = 'wrist_1' (ends 4-aligned)
         h('03 00 00 00'),  # off 60: position: length 3 (no padding: 64 is 8-aligned)
-        f64(0.1),  # off 64: position[0] = 0.1
-        f64(-1.5707963267948966),  # off 72: position[1] = -pi/2
-        f64(3.0),  # off 80: position[2] = 3.0
+        f64(0.1, -1.5707963267948966, 3.0),  # off 64: position = 0.1, -pi/2, 3.0
         h('00 00 00 00'),  # off 88: velocity: length 0 (empty: no padding to 8 follows)
         h('03 00 00 00'),  # off 92: effort: sequence length 3
-        f64(0.0),  # off 96: effort[0] = 0.0
-        f64(1.0),  # off 104: effort[1] = 1.0
-        f64(-2.0),  # off 112: effort[2] = -2.0
+        f64(0.0, 1.0, -2.0),  # off 96: effort
     ]
 )
 STRING = b''.join(
@@ -164,32 +126,19 @@ STRING = b''.join(
 ODOMETRY = b''.join(
     [
         h('00 01 00 00'),  # header: encapsulation CDR_LE (00 01), options 00 00
-        h('05 00 00 00'),  # off 0: header.stamp.sec = 5
-        h('00 65 cd 1d'),  # off 4: header.stamp.nanosec = 500000000
-        h('05 00 00 00'),  # off 8: header.frame_id: length 5
-        b'odom\x00',  # off 12: header.frame_id = 'odom'
-        h('00 00 00'),  # off 17: padding to 4
-        h('0a 00 00 00'),  # off 20: child_frame_id: length 10
-        b'base_link\x00',  # off 24: child_frame_id = 'base_link'
-        h('00 00 00 00 00 00'),  # off 34: padding to 8
-        f64(1.0),  # off 40: pose.pose.position.x = 1.0
-        f64(2.0),  # off 48: pose.pose.position.y = 2.0
-        f64(0.0),  # off 56: pose.pose.position.z = 0.0
-        f64(0.0),  # off 64: pose.pose.orientation.x = 0.0
-        f64(0.0),  # off 72: pose.pose.orientation.y = 0.0
-        f64(0.0998334166),  # off 80: pose.pose.orientation.z = 0.0998334166
-        f64(0.9950041653),  # off 88: pose.pose.orientation.w = 0.9950041653
-        pack('<36d', *[i / 10 for i in range(36)]),  # off 96: pose.covariance = 0.0, 0.1, ..., 3.5
-        f64(0.5),  # off 384: twist.twist.linear.x = 0.5
-        f64(0.0),  # off 392: twist.twist.linear.y = 0.0
-        f64(0.0),  # off 400: twist.twist.linear.z = 0.0
-        f64(0.0),  # off 408: twist.twist.angular.x = 0.0
-        f64(0.0),  # off 416: twist.twist.angular.y = 0.0
-        f64(0.1),  # off 424: twist.twist.angular.z = 0.1
+        h('05 00 00 00 00 65 cd 1d'),  # off 0: header.stamp: sec = 5, nanosec = 500000000
+        # off 8: header.frame_id: length 5, 'odom' + NUL, 3 bytes of padding at 17
+        h('05 00 00 00') + b'odom\x00' + h('00 00 00'),
+        # off 20: child_frame_id: length 10, 'base_link' + NUL, 6 bytes of padding at 34
+        h('0a 00 00 00') + b'base_link\x00' + h('00 00 00 00 00 00'),
+        f64(1.0, 2.0, 0.0),  # off 40: pose.pose.position
+        f64(0.0, 0.0, 0.0998334166, 0.9950041653),  # off 64: pose.pose.orientation
+        f64(*[i / 10 for i in range(36)]),  # off 96: pose.covariance = 0.0, 0.1, ..., 3.5
+        f64(0.5, 0.0, 0.0),  # off 384: twist.twist.linear
+        f64(0.0, 0.0, 0.1),  # off 408: twist.twist.angular
         bytes(36 * 8),  # off 432: twist.covariance = 36 zeros
     ]
 )
-
 
 ANNOTATED = {
     'tf2_msgs__TFMessage__one': TF_ONE,
