@@ -31,6 +31,8 @@ import sys
 import threading
 import time
 from typing import Any
+from typing import Protocol
+from typing import TYPE_CHECKING
 
 from tf_demo import transport
 from tf_demo.cli._observations import Observation
@@ -40,13 +42,26 @@ from tf_demo.cli._observations import TF_TOPIC
 from tf_demo.cli._snapshot import read_snapshot
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli._snapshot import SnapshotError
+from tf_demo.msgs.convert import transform_stamped_args
+from tf_demo.msgs.convert import TransformStampedLike
 from tf_demo.transport import StopRequest
 from tf_demo.transport.logging import format_log_line
 from tf_demo.transport.logging import LoggingSeverity
 from tf_demo.transport.ros_args import ROS_ARGS_USAGE
 from tf_demo.transport.ros_args import split_ros_args
 
+if TYPE_CHECKING:
+    from tf_demo.transport.node import Node
+
 MAX_OBSERVATIONS = 1_000_000
+
+
+class TfMessageLike(Protocol):
+    """A ``tf2_msgs/TFMessage`` of either world."""
+
+    @property
+    def transforms(self) -> Sequence[TransformStampedLike]:
+        """The message's transforms."""
 
 
 class TfRecorder:
@@ -54,7 +69,7 @@ class TfRecorder:
 
     def __init__(
         self,
-        node: Any,
+        node: Any,  # a Node; its create_subscription is typed for one-argument callbacks only
         *,
         tf_topic: str = TF_TOPIC,
         tf_static_topic: str = TF_STATIC_TOPIC,
@@ -85,10 +100,8 @@ class TfRecorder:
             ),
         ]
 
-    def _record(self, topic: str, msg: Any, info: Any = None) -> None:
+    def _record(self, topic: str, msg: TfMessageLike, info: object = None) -> None:
         """Record one message; ``info`` is rclpy's MessageInfo (with ``publisher_gid`` on DDS)."""
-        from tf_demo.msgs.convert import transform_stamped_args
-
         publisher = ''
         if isinstance(info, dict):
             gid = info.get('publisher_gid')
@@ -156,7 +169,7 @@ class TfRecorder:
             return list(self._observations)
 
 
-def listen(node: Any, seconds: float) -> None:
+def listen(node: Node, seconds: float) -> None:
     """Spin ``node`` for ``seconds`` of wall time (as view_frames does)."""
     deadline = time.monotonic() + max(0.0, seconds)
     while transport.ok():

@@ -52,7 +52,6 @@ from dataclasses import dataclass
 import json
 import math
 import os
-from typing import Any
 
 from tf_demo.core.files import InputFileError
 from tf_demo.core.files import read_text_file
@@ -233,7 +232,7 @@ class _Reader:
             result[key] = value_node
         return result
 
-    def scalar(self, node: yaml.Node, what: str) -> Any:
+    def scalar(self, node: yaml.Node, what: str) -> object:
         if not isinstance(node, yaml.ScalarNode):
             raise self.fail(node, 'expected a single value, found a list or mapping')
         if node.tag in _NUMBER_TAGS and len(node.value) > MAX_NUMBER_CHARACTERS:
@@ -251,7 +250,7 @@ class _Reader:
         except (ValueError, OverflowError) as error:
             raise self.fail(node, f'{what}: bad value {_cut(node.value)}: {error}') from None
 
-    def value(self, node: yaml.Node, what: str) -> Any:
+    def value(self, node: yaml.Node, what: str) -> object:
         self.visit(node)
         return self.scalar(node, what)
 
@@ -386,7 +385,7 @@ def find_cycle(edges: Iterable[tuple[str, str]]) -> list[str] | None:
 
 # libyaml's loader when PyYAML has it (about 6x faster); both are safe loaders. The nesting check
 # runs first because the composers recurse (libyaml's in C, without Python's recursion limit).
-_LOADER: Any = getattr(yaml, 'CSafeLoader', yaml.SafeLoader)
+_LOADER: type[yaml.SafeLoader | yaml.CSafeLoader] = getattr(yaml, 'CSafeLoader', yaml.SafeLoader)
 _OPENING_TOKENS = (
     yaml.BlockMappingStartToken,
     yaml.BlockSequenceStartToken,
@@ -493,9 +492,9 @@ def read_snapshot(path: str | os.PathLike[str]) -> Snapshot:
     return parse_snapshot(text, source)
 
 
-def frames_yaml_data(snapshot: Snapshot) -> dict[str, dict[str, Any]]:
+def frames_yaml_data(snapshot: Snapshot) -> dict[str, dict[str, object]]:
     """Convert the snapshot to the YAML-parsed ``all_frames_as_yaml`` map view_frames draws."""
-    data: dict[str, dict[str, Any]] = {}
+    data: dict[str, dict[str, object]] = {}
     for entry in snapshot.transforms:
         stamp = 0.0 if entry.is_static or entry.stamp_ns is None else entry.stamp_ns / 1e9
         rate = 10000.0 if entry.is_static else round(entry.rate_hz or 0.0, 3)

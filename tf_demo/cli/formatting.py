@@ -27,7 +27,6 @@ from collections.abc import Mapping
 from collections.abc import Sequence
 import json
 import math
-from typing import Any
 
 from tf_demo.core.math3d import matrix_from_quat
 from tf_demo.core.math3d import Quat
@@ -214,7 +213,7 @@ def _dot_quote(name: object) -> str:
 
 
 def generate_dot(
-    data: Mapping[str, Mapping[str, Any]] | None, recorded_time: tuple[int, int]
+    data: Mapping[str, Mapping[str, object]] | None, recorded_time: tuple[int, int]
 ) -> str:
     """
     Turn the YAML-parsed frame map of ``all_frames_as_yaml`` into view_frames' DOT text.

@@ -33,12 +33,17 @@ import secrets
 import string
 import sys
 from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.cli._args import parse_static_transform_args
 from tf_demo.cli._live import log_unnamed
 from tf_demo.cli.formatting import format_static_info
 from tf_demo.cli.formatting import STATIC_USAGE
 from tf_demo.transport.ros_args import split_ros_args
+
+if TYPE_CHECKING:
+    from tf_demo.transport.node import Node
+    from tf_demo.transport.qos import QoSProfile
 
 TOOL = 'static_transform_publisher'
 
@@ -53,7 +58,7 @@ STATIC_TOPIC = '/tf_static'
 QOS_OVERRIDABLE = ('depth', 'history', 'reliability')
 
 
-def static_broadcaster_qos(node: Any) -> Any:
+def static_broadcaster_qos(node: Node) -> QoSProfile:
     """
     tf2's static broadcaster QoS, after upstream's ``qos_overrides./tf_static.publisher.*``.
 
@@ -63,9 +68,10 @@ def static_broadcaster_qos(node: Any) -> Any:
     from tf_demo.ros.node_helpers import declare_qos_overrides
     from tf_demo.transport.qos import StaticBroadcasterQoS
 
-    return declare_qos_overrides(
+    profile: QoSProfile = declare_qos_overrides(
         node, STATIC_TOPIC, 'publisher', StaticBroadcasterQoS(), QOS_OVERRIDABLE
     )
+    return profile
 
 
 def make_node(

@@ -40,12 +40,16 @@ import subprocess
 import sys
 import threading
 import time
-from typing import Any
 from typing import IO
+from typing import TYPE_CHECKING
 
 from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import transform_stamped_args
+from tf_demo.msgs.convert import TransformStampedLike
 from tf_demo.transport.ros_args import split_ros_args
+
+if TYPE_CHECKING:
+    from tf_demo.transport.node import Node
 
 DEMO_NODES = ('static_tf_pub', 'dynamic_tf_pub', 'tf_listener')
 ROBOT_XACRO = 'mobile_robot.urdf.xacro'
@@ -117,7 +121,7 @@ def _number(text: str) -> float:
     return value
 
 
-def format_live_transform(target: str, source: str, transform: Any) -> str:
+def format_live_transform(target: str, source: str, transform: TransformStampedLike) -> str:
     """One printed line: stamp, translation and rotation (x, y, z, w) of source in target."""
     _, _, stamp_ns, (x, y, z), (qx, qy, qz, qw) = transform_stamped_args(transform)
     return (
@@ -261,7 +265,7 @@ def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
 
     children: list[Child] = []
     failure: str | None = None
-    node: Any = None
+    node: Node | None = None
     try:
         start_children(options, children)
         transport.init(args=['tf_demo_live', *ros_args])

@@ -32,9 +32,11 @@ healthy, 1 when problems were found, 2 for bad arguments. The analysis is
 from __future__ import annotations
 
 import argparse
+from collections.abc import Sequence
 import sys
 import threading
-from typing import Any
+from typing import Protocol
+from typing import TYPE_CHECKING
 
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._doctor import diagnose
@@ -50,6 +52,9 @@ from tf_demo.cli._live import tool_main
 from tf_demo.cli._observations import Observation
 from tf_demo.cli._observations import observations_from_snapshot
 from tf_demo.cli._snapshot import Snapshot
+
+if TYPE_CHECKING:
+    from tf_demo.transport.node import Node
 
 TOOL = 'tf_doctor'
 
@@ -105,6 +110,20 @@ def _report(
 MAX_JOINT_NAMES = 10_000
 
 
+class _StringLike(Protocol):
+    """A ``std_msgs/String`` of either world."""
+
+    data: str
+
+
+class _JointStateLike(Protocol):
+    """The part of a ``sensor_msgs/JointState`` of either world that is read here."""
+
+    @property
+    def name(self) -> Sequence[str]:
+        """The joint names."""
+
+
 class RobotRecorder:
     """
     Hear ``/robot_description`` (latched) and which joints ``/joint_states`` names.
@@ -113,7 +132,7 @@ class RobotRecorder:
     position (joint_state_publisher or the driver is not running).
     """
 
-    def __init__(self, node: Any) -> None:
+    def __init__(self, node: Node) -> None:
         from tf_demo.transport.messages import sensor_msgs
         from tf_demo.transport.messages import std_msgs
         from tf_demo.transport.qos import DurabilityPolicy
@@ -142,11 +161,11 @@ class RobotRecorder:
             ),
         ]
 
-    def _on_description(self, message: Any) -> None:
+    def _on_description(self, message: _StringLike) -> None:
         with self._lock:
             self.description = str(message.data)
 
-    def _on_joint_states(self, message: Any) -> None:
+    def _on_joint_states(self, message: _JointStateLike) -> None:
         with self._lock:
             self.joint_state_messages += 1
             for name in message.name:

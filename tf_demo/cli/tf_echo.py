@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import sys
 import time
-from typing import Any
 
 from tf_demo.cli._args import EchoArgs
 from tf_demo.cli._args import parse_echo_args
@@ -41,6 +40,7 @@ from tf_demo.cli.formatting import format_echo_failure_json
 from tf_demo.cli.formatting import format_echo_json
 from tf_demo.cli.formatting import format_echo_transform
 from tf_demo.cli.formatting import format_echo_waiting
+from tf_demo.msgs.convert import TransformStampedLike
 from tf_demo.transport.ros_args import split_ros_args
 
 TOOL = 'tf2_echo'
@@ -52,7 +52,7 @@ def _write(text: str) -> None:
     sys.stdout.flush()
 
 
-def _print_transform(options: EchoArgs, transform: Any) -> None:
+def _print_transform(options: EchoArgs, transform: TransformStampedLike) -> None:
     stamp = transform.header.stamp
     t = transform.transform.translation
     q = transform.transform.rotation

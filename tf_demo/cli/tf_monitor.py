@@ -31,7 +31,7 @@ from collections import deque
 import math
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo import transport
 from tf_demo.cli._args import count_argument
@@ -49,6 +49,9 @@ from tf_demo.cli.formatting import format_monitor_header
 from tf_demo.core.buffer_core import BufferCore
 from tf_demo.core.exceptions import TransformException
 from tf_demo.transport.ros_args import split_ros_args
+
+if TYPE_CHECKING:
+    from tf_demo.transport.node import Node
 
 TOOL = 'tf2_monitor'
 NO_AUTHORITY = '<no authority available>'
@@ -94,7 +97,7 @@ def _print_report(
     sys.stdout.flush()
 
 
-def _spin_for(node: Any, seconds: float) -> None:
+def _spin_for(node: Node, seconds: float) -> None:
     deadline = time.monotonic() + seconds
     while transport.ok():
         remaining = deadline - time.monotonic()

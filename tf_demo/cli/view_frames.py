@@ -25,11 +25,12 @@ by ``tf_saver`` without listening.
 from __future__ import annotations
 
 import argparse
+from collections.abc import Mapping
 import shutil
 import subprocess
 import sys
 import time
-from typing import Any
+from typing import Protocol
 
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._live import listen
@@ -78,7 +79,19 @@ def output_names(output: str | None) -> tuple[str, str]:
     return f'frames_{stamp}.gv', f'frames_{stamp}.pdf'
 
 
-def write_graph(logger: Any, data: Any, recorded_time: tuple[int, int], output: str | None) -> int:
+class InfoLogger(Protocol):
+    """What :func:`write_graph` logs with: a node's logger, or :class:`_StderrLogger`."""
+
+    def info(self, text: str, /) -> object:
+        """Log ``text`` at INFO."""
+
+
+def write_graph(
+    logger: InfoLogger,
+    data: Mapping[str, Mapping[str, object]] | None,
+    recorded_time: tuple[int, int],
+    output: str | None,
+) -> int:
     """Write the .gv file and render the .pdf with ``dot``; return the exit code."""
     frames_gv, frames_pdf = output_names(output)
     logger.info(f'Exporting graph in {frames_pdf} file...')
