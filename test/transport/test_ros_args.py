@@ -21,7 +21,6 @@ import sys
 from conftest import run_captured
 import pytest
 from tf_demo.transport.dds.log_format import LoggingSeverity
-from tf_demo.transport.params_yaml import parse_param_value
 from tf_demo.transport.ros_args import expand_topic_name
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import remove_ros_args
@@ -103,31 +102,6 @@ def test_split_ros_args_agrees_with_rclpy(
         assert kept == ['prog', *user]
 
 
-@pytest.mark.parametrize(
-    ('text', 'expected'),
-    [
-        ('true', True),
-        ('False', False),
-        ('42', 42),
-        ('-3', -3),
-        ('1.5', 1.5),
-        ('hello', 'hello'),
-        ("'42'", '42'),
-        ('[1, 2, 3]', [1, 2, 3]),
-        ('[1.0, 2.5]', [1.0, 2.5]),
-        ('[a, b]', ['a', 'b']),
-        ('[true, false]', [True, False]),
-        ('2020-01-01', '2020-01-01'),
-        ('/robot/base', '/robot/base'),
-    ],
-)
-def test_param_values_are_yaml_typed(text: str, expected: object) -> None:
-    """-p values get YAML types as rcl gives them (dates stay strings)."""
-    value = parse_param_value(text)
-    assert value == expected
-    assert type(value) is type(expected)
-
-
 def test_param_rules_can_name_a_node() -> None:
     """-p node:name:=value applies only to that node; plain -p to every node."""
     parsed = parse_ros_args(['--ros-args', '-p', 'talker:rate:=5.0', '--param', 'frame:=map'])
@@ -183,70 +157,6 @@ def test_log_level_rules() -> None:
         ).log_level
         is LoggingSeverity.ERROR
     )
-
-
-def test_params_file_wildcards_match_node_names(tmp_path: Path) -> None:
-    """/** matches everything, /ns/* one level, /*/name any namespace of one token."""
-    params = tmp_path / 'p.yaml'
-    params.write_text(
-        '/**:\n  ros__parameters:\n    a: 1\n'
-        '/ns/*:\n  ros__parameters:\n    b: 2\n'
-        '/*/talker:\n  ros__parameters:\n    c: 3\n'
-        'ns:\n  talker:\n    ros__parameters:\n      d: 4\n',
-        encoding='utf-8',
-    )
-    parsed = parse_ros_args(['--ros-args', '--params-file', str(params)])
-    assert set(parsed.parameter_overrides('/ns/talker')) == {'a', 'b', 'c', 'd'}
-    assert set(parsed.parameter_overrides('/talker')) == {'a'}
-    assert set(parsed.parameter_overrides('/other/talker')) == {'a', 'c'}
-
-
-TAGGED_PARAMS = (
-    '/**:\n  ros__parameters:\n'
-    '    translation: !!python/tuple [0.5, 0.0, 0.25]\n'
-    '    count: !custom 5\n'
-    '    label: !!str 5\n'
-    '    flags: !!python/tuple [true, false]\n'
-)
-
-
-def _tagged_overrides(tmp_path: Path) -> dict[str, object]:
-    params = tmp_path / 'tagged.yaml'
-    params.write_text(TAGGED_PARAMS, encoding='utf-8')
-    parsed = parse_ros_args(['--ros-args', '--params-file', str(params)])
-    return {name: p.value for name, p in parsed.parameter_overrides('/n').items()}
-
-
-def test_params_file_tags_are_ignored_but_str(tmp_path: Path) -> None:
-    """rcl ignores YAML tags but !!str: launch_ros writes lists as !!python/tuple sequences."""
-    values = _tagged_overrides(tmp_path)
-    assert values == {
-        'translation': [0.5, 0.0, 0.25],
-        'count': 5,
-        'label': '5',
-        'flags': [True, False],
-    }
-
-
-@pytest.mark.rclpy_world
-def test_params_file_tags_read_as_the_real_rcl_reads_them(tmp_path: Path, ros: None) -> None:
-    """The same params file through the real rcl: every value and type is ours."""
-    from tf_demo import transport
-
-    ours = _tagged_overrides(tmp_path)
-    node = transport.create_node(
-        'n',
-        cli_args=['--ros-args', '--params-file', str(tmp_path / 'tagged.yaml')],
-        automatically_declare_parameters_from_overrides=True,
-    )
-    try:
-        real = {name: node.get_parameter(name).value for name in ours}
-    finally:
-        node.destroy_node()
-    assert {k: list(v) if isinstance(v, (list, tuple)) else v for k, v in real.items()} == ours
-    assert {k: type(v) for k, v in real.items() if not isinstance(v, list)} == {
-        k: type(v) for k, v in ours.items() if not isinstance(v, list)
-    }
 
 
 PANDA_URDF = REPO_ROOT.parent / 'shared' / 'robots' / 'panda.urdf'
@@ -320,17 +230,6 @@ def test_bad_arguments_raise_rcl_style_errors(argv: list[str], message: str) -> 
     with pytest.raises(RosArgsError) as caught:
         parse_ros_args(['prog', '--ros-args', *argv])
     assert message in str(caught.value)
-
-
-def test_malformed_params_file_names_the_problem(tmp_path: Path) -> None:
-    """A params file that is not rcl's schema is rejected with the offending key."""
-    params = tmp_path / 'bad.yaml'
-    params.write_text('talker:\n  rate: 1.0\n', encoding='utf-8')
-    with pytest.raises(RosArgsError, match="'talker/rate' is not a node name"):
-        parse_ros_args(['--ros-args', '--params-file', str(params)])
-    params.write_text('talker:\n  ros__parameters:\n    x: [1\n', encoding='utf-8')
-    with pytest.raises(RosArgsError, match=r'bad\.yaml:4: invalid YAML \(column 1\)'):
-        parse_ros_args(['--ros-args', '--params-file', str(params)])
 
 
 NODE_SCRIPT = """
