@@ -395,20 +395,28 @@ def _tf_message_builder() -> Callable[[StructValues], TFMessage]:
         for (
             sec, nanosec, _, parent, _, _, child, _, tx, ty, tz, qx, qy, qz, qw
         ) in zip(*(fields,) * _TF_STRIDE, strict=True):  # fmt: skip
-            # Each object made bare, then its fields set: the fastest way (no constructor runs).
             stamp = new_time()
-            stamp.sec, stamp.nanosec = sec, nanosec
+            stamp.sec = sec
+            stamp.nanosec = nanosec
             header = new_header()
-            header.stamp, header.frame_id = stamp, parent.decode()
+            header.stamp = stamp
+            header.frame_id = parent.decode()
             translation = new_vector()
-            translation.x, translation.y, translation.z = tx, ty, tz
+            translation.x = tx
+            translation.y = ty
+            translation.z = tz
             rotation = new_quaternion()
-            rotation.x, rotation.y, rotation.z, rotation.w = qx, qy, qz, qw
+            rotation.x = qx
+            rotation.y = qy
+            rotation.z = qz
+            rotation.w = qw
             transform = new_transform()
-            transform.translation, transform.rotation = translation, rotation
+            transform.translation = translation
+            transform.rotation = rotation
             stamped = new_stamped()
-            stamped.header, stamped.transform = header, transform
+            stamped.header = header
             stamped.child_frame_id = child.decode()
+            stamped.transform = transform
             append(stamped)
         message = new_message()
         message.transforms = transforms
