@@ -240,7 +240,7 @@ def _message_class(module: _Module, spec: MessageSpec) -> list[str]:
     names = [field.name for field in spec.fields]
     slots = _sequence_literal(_INDENT, '__slots__ = ', [repr(name) for name in names], tuple_=True)
     if names != sorted(names):  # ruff wants them sorted; they are in field (wire) order
-        slots[0] += '  # noqa: RUF023 - in field order, as rclpy has them'
+        slots[0] += '  # noqa: RUF023 - the fields in wire order'
     lines = [
         f'class {spec.name}(Message):{noqa}',
         f'{_INDENT}"""{spec.msgtype}."""',

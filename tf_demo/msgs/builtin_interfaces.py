@@ -31,7 +31,7 @@ class Time(Message):
     """builtin_interfaces/msg/Time."""
 
     __msgtype__ = 'builtin_interfaces/msg/Time'
-    __slots__ = ('sec', 'nanosec')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('sec', 'nanosec')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     sec: int
     nanosec: int
@@ -63,7 +63,7 @@ class Duration(Message):
     """builtin_interfaces/msg/Duration."""
 
     __msgtype__ = 'builtin_interfaces/msg/Duration'
-    __slots__ = ('sec', 'nanosec')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('sec', 'nanosec')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     sec: int
     nanosec: int

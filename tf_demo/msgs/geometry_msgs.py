@@ -91,7 +91,7 @@ class Quaternion(Message):
     """geometry_msgs/msg/Quaternion."""
 
     __msgtype__ = 'geometry_msgs/msg/Quaternion'
-    __slots__ = ('x', 'y', 'z', 'w')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('x', 'y', 'z', 'w')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     x: float
     y: float
@@ -201,7 +201,7 @@ class Pose(Message):
     """geometry_msgs/msg/Pose."""
 
     __msgtype__ = 'geometry_msgs/msg/Pose'
-    __slots__ = ('position', 'orientation')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('position', 'orientation')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     position: Point
     orientation: Quaternion
@@ -233,7 +233,7 @@ class Transform(Message):
     """geometry_msgs/msg/Transform."""
 
     __msgtype__ = 'geometry_msgs/msg/Transform'
-    __slots__ = ('translation', 'rotation')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('translation', 'rotation')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     translation: Vector3
     rotation: Quaternion
@@ -265,7 +265,7 @@ class TransformStamped(Message):
     """geometry_msgs/msg/TransformStamped."""
 
     __msgtype__ = 'geometry_msgs/msg/TransformStamped'
-    __slots__ = ('header', 'child_frame_id', 'transform')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('header', 'child_frame_id', 'transform')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     header: Header
     child_frame_id: str
@@ -400,7 +400,7 @@ class PoseWithCovariance(Message):
     """geometry_msgs/msg/PoseWithCovariance."""
 
     __msgtype__ = 'geometry_msgs/msg/PoseWithCovariance'
-    __slots__ = ('pose', 'covariance')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('pose', 'covariance')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     pose: Pose
     covariance: NDArray[numpy.float64] | Sequence[float]
@@ -468,7 +468,7 @@ class Twist(Message):
     """geometry_msgs/msg/Twist."""
 
     __msgtype__ = 'geometry_msgs/msg/Twist'
-    __slots__ = ('linear', 'angular')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('linear', 'angular')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     linear: Vector3
     angular: Vector3
@@ -500,7 +500,7 @@ class TwistWithCovariance(Message):
     """geometry_msgs/msg/TwistWithCovariance."""
 
     __msgtype__ = 'geometry_msgs/msg/TwistWithCovariance'
-    __slots__ = ('twist', 'covariance')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('twist', 'covariance')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     twist: Twist
     covariance: NDArray[numpy.float64] | Sequence[float]

@@ -34,7 +34,7 @@ class Odometry(Message):
     """nav_msgs/msg/Odometry."""
 
     __msgtype__ = 'nav_msgs/msg/Odometry'
-    __slots__ = ('header', 'child_frame_id', 'pose', 'twist')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('header', 'child_frame_id', 'pose', 'twist')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     header: Header
     child_frame_id: str

@@ -96,7 +96,7 @@ class ParameterValue(Message):
     """rcl_interfaces/msg/ParameterValue."""
 
     __msgtype__ = 'rcl_interfaces/msg/ParameterValue'
-    __slots__ = (  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = (  # noqa: RUF023 - the fields in wire order
         'type',
         'bool_value',
         'integer_value',
@@ -208,7 +208,7 @@ class FloatingPointRange(Message):
     """rcl_interfaces/msg/FloatingPointRange."""
 
     __msgtype__ = 'rcl_interfaces/msg/FloatingPointRange'
-    __slots__ = ('from_value', 'to_value', 'step')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('from_value', 'to_value', 'step')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     from_value: float
     to_value: float
@@ -247,7 +247,7 @@ class IntegerRange(Message):
     """rcl_interfaces/msg/IntegerRange."""
 
     __msgtype__ = 'rcl_interfaces/msg/IntegerRange'
-    __slots__ = ('from_value', 'to_value', 'step')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('from_value', 'to_value', 'step')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     from_value: int
     to_value: int
@@ -286,7 +286,7 @@ class ParameterDescriptor(Message):
     """rcl_interfaces/msg/ParameterDescriptor."""
 
     __msgtype__ = 'rcl_interfaces/msg/ParameterDescriptor'
-    __slots__ = (  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = (  # noqa: RUF023 - the fields in wire order
         'name',
         'type',
         'description',
@@ -354,7 +354,7 @@ class SetParametersResult(Message):
     """rcl_interfaces/msg/SetParametersResult."""
 
     __msgtype__ = 'rcl_interfaces/msg/SetParametersResult'
-    __slots__ = ('successful', 'reason')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('successful', 'reason')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     successful: bool
     reason: str
@@ -421,7 +421,7 @@ class ParameterEvent(Message):
     """rcl_interfaces/msg/ParameterEvent."""
 
     __msgtype__ = 'rcl_interfaces/msg/ParameterEvent'
-    __slots__ = ('stamp', 'node', 'new_parameters', 'changed_parameters', 'deleted_parameters')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('stamp', 'node', 'new_parameters', 'changed_parameters', 'deleted_parameters')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     stamp: Time
     node: str
@@ -468,7 +468,7 @@ class Log(Message):
     """rcl_interfaces/msg/Log."""
 
     __msgtype__ = 'rcl_interfaces/msg/Log'
-    __slots__ = ('stamp', 'level', 'name', 'msg', 'file', 'function', 'line')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('stamp', 'level', 'name', 'msg', 'file', 'function', 'line')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     DEBUG: Final = 10
     INFO: Final = 20
@@ -528,7 +528,7 @@ class ListParameters_Request(Message):  # noqa: N801 - rosidl names it so
     """rcl_interfaces/srv/ListParameters_Request."""
 
     __msgtype__ = 'rcl_interfaces/srv/ListParameters_Request'
-    __slots__ = ('prefixes', 'depth')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('prefixes', 'depth')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     DEPTH_RECURSIVE: Final = 0
     prefixes: list[str]

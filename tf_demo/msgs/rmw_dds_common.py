@@ -67,7 +67,7 @@ class NodeEntitiesInfo(Message):
     """rmw_dds_common/msg/NodeEntitiesInfo."""
 
     __msgtype__ = 'rmw_dds_common/msg/NodeEntitiesInfo'
-    __slots__ = ('node_namespace', 'node_name', 'reader_gid_seq', 'writer_gid_seq')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('node_namespace', 'node_name', 'reader_gid_seq', 'writer_gid_seq')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     node_namespace: str
     node_name: str

@@ -35,7 +35,7 @@ class JointState(Message):
     """sensor_msgs/msg/JointState."""
 
     __msgtype__ = 'sensor_msgs/msg/JointState'
-    __slots__ = ('header', 'name', 'position', 'velocity', 'effort')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('header', 'name', 'position', 'velocity', 'effort')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     header: Header
     name: list[str]

@@ -40,7 +40,7 @@ class ServiceEventInfo(Message):
     """service_msgs/msg/ServiceEventInfo."""
 
     __msgtype__ = 'service_msgs/msg/ServiceEventInfo'
-    __slots__ = ('event_type', 'stamp', 'client_gid', 'sequence_number')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('event_type', 'stamp', 'client_gid', 'sequence_number')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     REQUEST_SENT: Final = 0
     REQUEST_RECEIVED: Final = 1

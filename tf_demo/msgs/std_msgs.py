@@ -32,7 +32,7 @@ class Header(Message):
     """std_msgs/msg/Header."""
 
     __msgtype__ = 'std_msgs/msg/Header'
-    __slots__ = ('stamp', 'frame_id')  # noqa: RUF023 - in field order, as rclpy has them
+    __slots__ = ('stamp', 'frame_id')  # noqa: RUF023 - the fields in wire order
     __hash__ = None  # mutable: unhashable, as in rclpy
     stamp: Time
     frame_id: str
