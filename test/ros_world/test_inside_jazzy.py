@@ -30,13 +30,13 @@ from typing import Any
 from conftest import eventually
 from conftest import REPO_ROOT
 from conftest import run_captured
-from jazzy import graph_lists
-from jazzy import ros2
-from jazzy import standalone_command
-from jazzy import standalone_env
-from jazzy import started
-from jazzy import stop
 import pytest
+from ros_world.jazzy import graph_lists
+from ros_world.jazzy import ros2
+from ros_world.jazzy import standalone_command
+from ros_world.jazzy import standalone_env
+from ros_world.jazzy import started
+from ros_world.jazzy import stop
 
 pytestmark = [pytest.mark.rclpy_world, pytest.mark.timeout(180)]
 

@@ -51,11 +51,11 @@ import sys
 from typing import Any
 
 from conftest import run_captured
-from jazzy import require_package
-from jazzy import standalone_env
-from jazzy import standalone_python
-from jazzy import started
 import pytest
+from ros_world.jazzy import require_package
+from ros_world.jazzy import standalone_env
+from ros_world.jazzy import standalone_python
+from ros_world.jazzy import started
 from tf_demo.msgs import cdr
 from tf_demo.msgs._reference import reference_deserialize
 

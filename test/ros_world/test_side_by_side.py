@@ -44,15 +44,15 @@ from xml.etree import ElementTree
 from conftest import _exclusive_domain
 from conftest import eventually
 from conftest import ProcessOutput
-from jazzy import kill_group
-from jazzy import rclpy_node
-from jazzy import RclpyNode
-from jazzy import require_package
-from jazzy import ros2
-from jazzy import running
-from jazzy import start_session
-from jazzy import stop
 import pytest
+from ros_world.jazzy import kill_group
+from ros_world.jazzy import rclpy_node
+from ros_world.jazzy import RclpyNode
+from ros_world.jazzy import require_package
+from ros_world.jazzy import ros2
+from ros_world.jazzy import running
+from ros_world.jazzy import start_session
+from ros_world.jazzy import stop
 import yaml
 
 pytestmark = [pytest.mark.rclpy_world, pytest.mark.timeout(600)]

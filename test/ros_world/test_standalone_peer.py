@@ -33,15 +33,15 @@ from typing import Any
 from conftest import eventually
 from conftest import PARAMETER_SERVICES
 from conftest import run_captured
-from jazzy import graph_lists
-from jazzy import RclpyNode
-from jazzy import require_package
-from jazzy import require_ros2_cli
-from jazzy import ros2
-from jazzy import standalone_command
-from jazzy import standalone_env
-from jazzy import started
 import pytest
+from ros_world.jazzy import graph_lists
+from ros_world.jazzy import RclpyNode
+from ros_world.jazzy import require_package
+from ros_world.jazzy import require_ros2_cli
+from ros_world.jazzy import ros2
+from ros_world.jazzy import standalone_command
+from ros_world.jazzy import standalone_env
+from ros_world.jazzy import started
 
 pytestmark = [pytest.mark.rclpy_world, pytest.mark.timeout(300)]
 
