@@ -16,7 +16,7 @@
 The hot paths' inlined rotation math, pinned to :mod:`tf_demo.core.math3d` within 1e-12.
 
 math3d is the one source of the rotation math.  The lookup walk
-(``buffer_core._accumulate_side``) and the vectorised walk (``_batch`` with the interval
+(``frame_tree.accumulate_side``) and the vectorised walk (``_batch`` with the interval
 constants of ``TimeCache.arrays``) inline lerp, slerp and composition for speed; each test
 below names the copy it pins and compares it with math3d on drawn inputs (quaternions up to
 sign).  Where a test builds the newer rotation from the older one, the angle between them is
@@ -35,7 +35,7 @@ import numpy as np
 import numpy.typing as npt
 import pytest
 from tf_demo.core import _batch
-from tf_demo.core import buffer_core
+from tf_demo.core import frame_tree
 from tf_demo.core import math3d
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
@@ -116,7 +116,7 @@ axes = (
 )
 
 
-# --- buffer_core._accumulate_side: the lookup walk -------------------------------------------
+# --- frame_tree.accumulate_side: the lookup walk -------------------------------------------
 
 
 @given(moves, moves, spans, fractions)
@@ -128,11 +128,11 @@ axes = (
 def test_walk_interpolation_is_math3d_lerp_and_slerp(
     first: Transform, second: Transform, span: int, fraction: float
 ) -> None:
-    """Pins ``buffer_core._accumulate_side``'s inlined interpolate (lerp + slerp) to math3d."""
+    """Pins ``frame_tree.accumulate_side``'s inlined interpolate (lerp + slerp) to math3d."""
     time_ns = _lane_time(span, fraction)
     caches: list[TimeCache | StaticCache | None] = [None, _dynamic(first, second, span), None]
-    outcome, frame, _, depth, *link = buffer_core._accumulate_side(caches, 1, 0, -1, time_ns)
-    assert (outcome, frame, depth) == (buffer_core._SIDE_NO_CACHE, PARENT, 1)
+    outcome, frame, _, depth, *link = frame_tree.accumulate_side(caches, 1, 0, -1, time_ns)
+    assert (outcome, frame, depth) == (frame_tree.SIDE_NO_CACHE, PARENT, 1)
     t, q = _expected_link(first, second, (time_ns - T0) / span)
     _assert_close(tuple(link[:3]), t, 'lerp')
     _assert_same_rotation(tuple(link[3:]), q)
@@ -143,7 +143,7 @@ def test_walk_interpolation_is_math3d_lerp_and_slerp(
 def test_walk_composition_is_math3d_compose(
     bottom: Transform, middle: Transform, top: Transform
 ) -> None:
-    """Pins ``buffer_core._accumulate_side``'s inlined ``link * acc`` to math3d.compose."""
+    """Pins ``frame_tree.accumulate_side``'s inlined ``link * acc`` to math3d.compose."""
     caches: list[TimeCache | StaticCache | None] = [
         None,
         _static(bottom, 1),
@@ -151,8 +151,8 @@ def test_walk_composition_is_math3d_compose(
         _static(top, 3),
         None,
     ]
-    outcome, frame, _, depth, *acc = buffer_core._accumulate_side(caches, 1, 0, -1, 0)
-    assert (outcome, frame, depth) == (buffer_core._SIDE_NO_CACHE, 4, 3)
+    outcome, frame, _, depth, *acc = frame_tree.accumulate_side(caches, 1, 0, -1, 0)
+    assert (outcome, frame, depth) == (frame_tree.SIDE_NO_CACHE, 4, 3)
     t, q = math3d.compose(middle[0], middle[1], bottom[0], bottom[1])  # 3_T_1
     t, q = math3d.compose(top[0], top[1], t, q)  # 4_T_1
     _assert_close(tuple(acc[:3]), t, 'compose translation')

@@ -20,8 +20,9 @@ different frames (a parent change in the history) are processed in groups, one n
 distinct frame and depth.  Cache reads use ``searchsorted`` and the same interpolation formulas
 as :class:`~tf_demo.core.time_cache.TimeCache`, so results equal the scalar walk.  Lanes that
 fail are only flagged: the caller replays them through the scalar walk, which raises tf2's exact
-exception.  The lane-wise lerp, slerp and composition are vectorised copies of
-:mod:`~tf_demo.core.math3d`'s, pinned to it (within 1e-12) by ``test/core/test_math3d_inlined.py``.
+exception.  Quaternion products and the full-path steps call :mod:`~tf_demo.core.math3d` on
+lanes; the lane-wise lerp, slerp and the walk's translation step are vectorised copies of
+math3d's, pinned to it (within 1e-12) by ``test/core/test_math3d_inlined.py``.
 """
 
 from __future__ import annotations
@@ -30,7 +31,9 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
+from tf_demo.core.math3d import quat_multiply
 from tf_demo.core.math3d import quat_multiply_batch
+from tf_demo.core.math3d import rotate_vector
 from tf_demo.core.math3d import rotate_vector_batch
 from tf_demo.core.time_cache import CacheArrays
 from tf_demo.core.time_cache import StaticCache
@@ -275,17 +278,10 @@ def _compose_translation(link: Link, acc: Link) -> tuple[Value, Value, Value]:
 def _compose(link: Link, acc: Link) -> Link:
     """Return ``link * acc`` on floats or lane arrays, with the scalar walk's formula."""
     x, y, z = _compose_translation(link, acc)
-    px, py, pz, pw = link[3:]
-    qx, qy, qz, qw = acc[3:]
-    return (
-        x,
-        y,
-        z,
-        pw * qx + px * qw + py * qz - pz * qy,
-        pw * qy + py * qw + pz * qx - px * qz,
-        pw * qz + pz * qw + px * qy - py * qx,
-        pw * qw - px * qx - py * qy - pz * qz,
-    )
+    _, _, _, px, py, pz, pw = link
+    _, _, _, qx, qy, qz, qw = acc
+    rx, ry, rz, rw = quat_multiply((px, py, pz, pw), (qx, qy, qz, qw))
+    return (x, y, z, rx, ry, rz, rw)
 
 
 def _uniform_parent(cache: TimeCache | StaticCache, earliest: int, latest: int) -> int | None:
@@ -341,50 +337,20 @@ def _chain_product(links: list[TimeCache | StaticCache], times: IntArray) -> Lin
     return acc
 
 
-def _rotate(q: tuple[Value, Value, Value, Value], v: tuple[Value, Value, Value]) -> Link:
-    """
-    Return ``R(q) v`` (first three values) and ``q`` with math3d's ``rotate_vector`` order.
-
-    On floats or lane arrays: the full-path steps of the scalar walk (:func:`_inverse`,
-    :func:`_inverse_times`) go through math3d, so these must match it operation by operation.
-    """
-    qx, qy, qz, qw = q
-    vx, vy, vz = v
-    rx = qw * vx + qy * vz - qz * vy
-    ry = qw * vy + qz * vx - qx * vz
-    rz = qw * vz + qx * vy - qy * vx
-    rw = -qx * vx - qy * vy - qz * vz
-    return (
-        rw * -qx + rx * qw + ry * -qz - rz * -qy,
-        rw * -qy + ry * qw + rz * -qx - rx * -qz,
-        rw * -qz + rz * qw + rx * -qy - ry * -qx,
-        qx,
-        qy,
-        qz,
-        qw,
-    )
-
-
 def _inverse(t: Link) -> Link:
-    """Return ``t^-1`` as the scalar walk computes it (math3d's ``invert``)."""
+    """Return ``t^-1`` as the scalar walk computes it: :func:`math3d.invert <invert>`'s steps."""
     tx, ty, tz, qx, qy, qz, qw = t
-    return _rotate((-qx, -qy, -qz, qw), (-tx, -ty, -tz))
+    x, y, z = rotate_vector((-qx, -qy, -qz, qw), (-tx, -ty, -tz))
+    return (x, y, z, -qx, -qy, -qz, qw)
 
 
 def _inverse_times(inverse: Link, source: Link) -> Link:
     """Return ``inverse * source`` as the scalar walk's full-path step (math3d's ``compose``)."""
     ox, oy, oz, ix, iy, iz, iw = inverse
     sx, sy, sz, sqx, sqy, sqz, sqw = source
-    rx, ry, rz, _, _, _, _ = _rotate((ix, iy, iz, iw), (sx, sy, sz))
-    return (
-        rx + ox,
-        ry + oy,
-        rz + oz,
-        iw * sqx + ix * sqw + iy * sqz - iz * sqy,
-        iw * sqy + iy * sqw + iz * sqx - ix * sqz,
-        iw * sqz + iz * sqw + ix * sqy - iy * sqx,
-        iw * sqw - ix * sqx - iy * sqy - iz * sqz,
-    )
+    rx, ry, rz = rotate_vector((ix, iy, iz, iw), (sx, sy, sz))
+    qx, qy, qz, qw = quat_multiply((ix, iy, iz, iw), (sqx, sqy, sqz, sqw))
+    return (rx + ox, ry + oy, rz + oz, qx, qy, qz, qw)
 
 
 def _uniform_side(

@@ -13,12 +13,12 @@
 # limitations under the License.
 
 """
-tf2's ``BufferCore`` in pure Python: insertion, the tree walk, lookups and introspection.
+tf2's ``BufferCore`` in pure Python: insertion, lookups and introspection, thread-safe.
 
-Semantics and message texts are tf2 Jazzy's (``spec/tf2.md`` §1-3).  Frame names are interned
-to integer ids in order of first appearance (child before parent); id 0 is ``NO_PARENT``.  Every
-public method takes one lock, so several threads may insert and look up at once; insert
-callbacks run after the lock is released.
+Semantics and message texts are tf2 Jazzy's (``spec/tf2.md`` §1-3).  The frames, their caches
+and tf2's walks over them are :class:`~tf_demo.core.frame_tree.FrameTree`'s, which this class
+extends.  Every public method takes one lock, so several threads may insert and look up at once;
+insert callbacks run after the lock is released.
 
 ``lookup_transform(target, source, t)`` returns ``target_T_source``: the pose of ``source`` in
 ``target``, mapping coordinates given in ``source`` into ``target``.
@@ -33,8 +33,8 @@ sign (``spec/tf2.md`` §9 says they are not; the upstream source wins).
 
 from __future__ import annotations
 
-from bisect import bisect_right
 from collections.abc import Callable
+from collections.abc import Sequence
 import logging
 import math
 import threading
@@ -47,25 +47,16 @@ import numpy as np
 from tf_demo.core import math3d
 from tf_demo.core._batch import batch_walk
 from tf_demo.core._batch import batch_walk_uniform
-from tf_demo.core.exceptions import BackwardExtrapolationException
-from tf_demo.core.exceptions import ConnectivityException
-from tf_demo.core.exceptions import ExtrapolationException
-from tf_demo.core.exceptions import ForwardExtrapolationException
-from tf_demo.core.exceptions import InvalidArgumentException
-from tf_demo.core.exceptions import LookupException
-from tf_demo.core.exceptions import NoDataForExtrapolationException
 from tf_demo.core.exceptions import TransformException
+from tf_demo.core.frame_tree import FrameTree
+from tf_demo.core.frame_tree import MAX_GRAPH_DEPTH
 from tf_demo.core.frames_format import all_frames_as_dot
 from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import all_frames_as_yaml
 from tf_demo.core.frames_format import FrameInfo
-from tf_demo.core.frames_format import NO_AUTHORITY
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
 from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import duration_to_sec
-from tf_demo.core.time_cache import ERROR_BACKWARD_EXTRAPOLATION
-from tf_demo.core.time_cache import ERROR_FORWARD_EXTRAPOLATION
-from tf_demo.core.time_cache import ERROR_NO_DATA_FOR_EXTRAPOLATION
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
@@ -81,22 +72,17 @@ __all__ = [
     'TransformResult',
 ]
 
-MAX_GRAPH_DEPTH = 1000
 QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
-NO_PARENT = 'NO_PARENT'
 
 _LOGGER = logging.getLogger('tf_demo.core')
 _canonical_quat = math3d.canonical_quat
-_bisect_right = bisect_right
 _new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 #: Lanes per pass of :meth:`BufferCore.lookup_transforms`.
 _BATCH_CHUNK = 4096
-_acos = math.acos
-_sin = math.sin
-_IDENTITY_T: Vec3 = (0.0, 0.0, 0.0)
-_IDENTITY_Q: Quat = (0.0, 0.0, 0.0, 1.0)
+#: The identity, shared: ``lookup_transform`` tests ``q is _IDENTITY_Q`` to skip canonicalising.
+_IDENTITY_T = math3d.ZERO_VEC
+_IDENTITY_Q = math3d.IDENTITY_QUAT
 
-Cache = TimeCache | StaticCache
 LogFunction = Callable[[int, str], None]
 
 
@@ -119,146 +105,6 @@ def _c_float(value: float) -> str:
     return f'{value:f}'
 
 
-def _extrapolation_error(code: int, text: str) -> ExtrapolationException:
-    if code == ERROR_BACKWARD_EXTRAPOLATION:
-        return BackwardExtrapolationException(text)
-    if code == ERROR_FORWARD_EXTRAPOLATION:
-        return ForwardExtrapolationException(text)
-    if code == ERROR_NO_DATA_FOR_EXTRAPOLATION:
-        return NoDataForExtrapolationException(text)
-    return ExtrapolationException(text)
-
-
-# Outcomes of :func:`_accumulate_side`.
-_SIDE_REACHED_STOP = 0
-_SIDE_NO_CACHE = 1
-_SIDE_NO_DATA = 2
-_SIDE_REACHED_OTHER = 3
-_SIDE_LOOP = 4
-
-SideResult = tuple[int, int, int, int, float, float, float, float, float, float, float]
-
-
-def _accumulate_side(
-    caches: list[Cache | None], frame: int, stop: int, other: int, time_ns: int
-) -> SideResult:
-    """
-    Walk from ``frame`` towards the root, accumulating ``top_T_frame`` (one side of the walk).
-
-    This is one side of tf2's ``walkToTopParent`` with :meth:`TimeCache.get_data` (tf2's
-    ``findClosest`` and ``interpolate``) inlined: per link only locals, no tuple per link.  The
-    inlined lerp, slerp and composition are copies of :mod:`~tf_demo.core.math3d`'s, kept for
-    speed and pinned to it (within 1e-12) by ``test/core/test_math3d_inlined.py``.
-    The walk stops at ``stop``, at a frame without cache or data, at ``other`` (once its data
-    was read) or after ``MAX_GRAPH_DEPTH`` steps.
-
-    :returns: ``(outcome, frame, last_frame, depth, x, y, z, qx, qy, qz, qw)``: the outcome
-        (``_SIDE_*``), the frame where the walk stopped, the last frame whose link was
-        accumulated (the start frame when none), the number of links accumulated and the
-        accumulated transform (identity when none).
-    """
-    depth = 0
-    last_frame = frame
-    x = y = z = qx = qy = qz = 0.0
-    qw = 1.0
-    acos = _acos
-    sin = _sin
-    while frame != stop:
-        cache = caches[frame]
-        if cache is None:
-            return _SIDE_NO_CACHE, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-        if cache.is_static:
-            lx, ly, lz, px, py, pz, pw, parent = cache._sample  # type: ignore[union-attr]
-        else:
-            view = cache._view  # type: ignore[union-attr]
-            if view is None:
-                view = cache.view()  # type: ignore[union-attr]
-            earliest, latest, scale, start, last, stamps, samples = view
-            if not (earliest < time_ns < latest and time_ns):
-                # At an end of the history, time 0 (the newest sample), or no data.
-                if start > last:
-                    return _SIDE_NO_DATA, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-                if time_ns in (0, latest):
-                    lx, ly, lz, px, py, pz, pw, parent = samples[last]
-                elif time_ns == earliest:
-                    lx, ly, lz, px, py, pz, pw, parent = samples[start]
-                else:
-                    return _SIDE_NO_DATA, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-            else:
-                # Interior: a linear guess (exact for evenly spaced streams), else bisect.
-                index = start + int((time_ns - earliest) * scale)
-                if index >= last:
-                    index = last - 1
-                one_stamp = stamps[index]
-                if one_stamp <= time_ns:
-                    two_stamp = stamps[index + 1]
-                    if two_stamp <= time_ns:
-                        index = _bisect_right(stamps, time_ns, index + 2, last + 1) - 1
-                        one_stamp = stamps[index]
-                        two_stamp = stamps[index + 1]
-                else:
-                    index = _bisect_right(stamps, time_ns, start, index) - 1
-                    one_stamp = stamps[index]
-                    two_stamp = stamps[index + 1]
-                lx, ly, lz, px, py, pz, pw, parent = samples[index]
-                tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1]
-                if parent1 == parent:
-                    # tf2's interpolate: lerp the translation, slerp the rotation.
-                    ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)
-                    keep = 1.0 - ratio
-                    lx = keep * lx + ratio * tx1
-                    ly = keep * ly + ratio * ty1
-                    lz = keep * lz + ratio * tz1
-                    dot = px * x1 + py * y1 + pz * z1 + pw * w1
-                    if dot < 0:
-                        theta = acos(-dot if -dot < 1.0 else 1.0)
-                        if theta != 0.0:
-                            d = 1.0 / sin(theta)
-                            s0 = sin(keep * theta) * d
-                            s1 = -sin(ratio * theta) * d
-                            px = px * s0 + x1 * s1
-                            py = py * s0 + y1 * s1
-                            pz = pz * s0 + z1 * s1
-                            pw = pw * s0 + w1 * s1
-                    else:
-                        theta = acos(dot if dot < 1.0 else 1.0)
-                        if theta != 0.0:
-                            d = 1.0 / sin(theta)
-                            s0 = sin(keep * theta) * d
-                            s1 = sin(ratio * theta) * d
-                            px = px * s0 + x1 * s1
-                            py = py * s0 + y1 * s1
-                            pz = pz * s0 + z1 * s1
-                            pw = pw * s0 + w1 * s1
-        if frame == other:
-            return _SIDE_REACHED_OTHER, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-        if depth:
-            # link * acc.  p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations
-            # than tf2's q * v * conj(q), equal to about 1e-16.
-            ux = 2.0 * (py * z - pz * y)
-            uy = 2.0 * (pz * x - px * z)
-            uz = 2.0 * (px * y - py * x)
-            x, y, z = (
-                x + pw * ux + (py * uz - pz * uy) + lx,
-                y + pw * uy + (pz * ux - px * uz) + ly,
-                z + pw * uz + (px * uy - py * ux) + lz,
-            )
-            qx, qy, qz, qw = (
-                pw * qx + px * qw + py * qz - pz * qy,
-                pw * qy + py * qw + pz * qx - px * qz,
-                pw * qz + pz * qw + px * qy - py * qx,
-                pw * qw - px * qx - py * qy - pz * qz,
-            )
-        else:
-            x, y, z, qx, qy, qz, qw = lx, ly, lz, px, py, pz, pw
-        last_frame = frame
-        frame = parent
-        depth += 1
-        if depth > MAX_GRAPH_DEPTH:
-            return _SIDE_LOOP, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-    return _SIDE_REACHED_STOP, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-
-
 def _time_from_sec(seconds: float) -> int:
     """Convert seconds to nanoseconds as tf2's ``timeFromSec`` (floor, then rounded ns)."""
     sec = math.floor(seconds)
@@ -266,7 +112,7 @@ def _time_from_sec(seconds: float) -> int:
     return int(sec) * 1_000_000_000 + int(nsec)
 
 
-class BufferCore:
+class BufferCore(FrameTree):
     """
     tf2's transform buffer: per-link time caches plus tree walking (thread-safe).
 
@@ -282,54 +128,11 @@ class BufferCore:
             raise ValueError(f'cache_time_ns must not be negative, got {cache_time_ns}')
         self.cache_time_ns = int(cache_time_ns)
         self._log: LogFunction = log if log is not None else _default_log
+        super().__init__()
         self._lock = threading.Lock()
-        self._ids: dict[str, int] = {NO_PARENT: 0}
-        self._names: list[str] = [NO_PARENT]
-        self._caches: list[Cache | None] = [None]
-        self._authority: dict[int, str] = {}
         self._callbacks: dict[int, Callable[[], None]] = {}
         self._callbacks_snapshot: tuple[Callable[[], None], ...] = ()
         self._next_handle = 1
-
-    # ------------------------------------------------------------------ frame ids
-
-    def _intern(self, name: str) -> int:
-        frame_id = self._ids.get(name)
-        if frame_id is None:
-            frame_id = len(self._names)
-            self._ids[name] = frame_id
-            self._names.append(name)
-            self._caches.append(None)
-        return frame_id
-
-    def _validate(self, label: str, frame: str) -> int:
-        """Return the id of ``frame`` or raise tf2's error for argument ``label``."""
-        if not frame:
-            raise InvalidArgumentException(
-                f'Invalid argument "{frame}" passed to {label} - in tf2 frame_ids cannot be empty'
-            )
-        if frame[0] == '/':
-            raise InvalidArgumentException(
-                f'Invalid argument "{frame}" passed to {label} - '
-                "in tf2 frame_ids cannot start with a '/'"
-            )
-        frame_id = self._ids.get(frame, 0)
-        if frame_id == 0:
-            raise LookupException(f'"{frame}" passed to {label} does not exist. ')
-        return frame_id
-
-    def _validate_quietly(self, label: str, frame: str) -> tuple[int, str]:
-        """Return ``(id, '')`` or ``(0, tf2's "Invalid frame ID" text)``."""
-        if not frame:
-            rationale = 'in tf2 frame_ids cannot be empty'
-        elif frame[0] == '/':
-            rationale = "in tf2 frame_ids cannot start with a '/'"
-        else:
-            frame_id = self._ids.get(frame, 0)
-            if frame_id:
-                return frame_id, ''
-            rationale = 'frame does not exist'
-        return 0, f'Invalid frame ID "{frame}" passed to {label} - {rationale}'
 
     # ------------------------------------------------------------------ insertion
 
@@ -338,8 +141,8 @@ class BufferCore:
         parent: str,
         child: str,
         stamp_ns: int,
-        translation: Vec3 | tuple[float, ...],
-        rotation: Quat | tuple[float, ...],
+        translation: Sequence[float],
+        rotation: Sequence[float],
         authority: str = '',
         is_static: bool = False,
     ) -> bool:
@@ -363,7 +166,7 @@ class BufferCore:
             tx = float(tx)
             ty = float(ty)
             tz = float(tz)
-            rx, ry, rz, rw = _canonical_quat(rotation)  # type: ignore[arg-type]
+            rx, ry, rz, rw = _canonical_quat(rotation)
             stamp_ns = int(stamp_ns)
         except (TypeError, ValueError) as error:
             raise TypeError(
@@ -371,18 +174,8 @@ class BufferCore:
                 f'and an integer stamp_ns: {error}'
             ) from error
         # Share one object for exact zeros (planar robots store many): saves memory per sample.
-        if tx == 0.0:
-            tx = 0.0
-        if ty == 0.0:
-            ty = 0.0
-        if tz == 0.0:
-            tz = 0.0
-        if rx == 0.0:
-            rx = 0.0
-        if ry == 0.0:
-            ry = 0.0
-        if rz == 0.0:
-            rz = 0.0
+        tx, ty, tz = tx or 0.0, ty or 0.0, tz or 0.0
+        rx, ry, rz = rx or 0.0, ry or 0.0, rz or 0.0
         if parent and parent[0] == '/':
             parent = parent[1:]
         if child and child[0] == '/':
@@ -499,82 +292,6 @@ class BufferCore:
 
     # ------------------------------------------------------------------ latest common time
 
-    def _loop_text(self) -> str:
-        frames = self._frame_infos()
-        return (
-            f'The tf tree is invalid because it contains a loop.\n{all_frames_as_string(frames)}\n'
-        )
-
-    def _connectivity_text(self, source_id: int, target_id: int) -> str:
-        return (
-            f"Could not find a connection between '{self._names[target_id]}' and "
-            f"'{self._names[source_id]}' because they are not part of the same tree."
-            'Tf has two or more unconnected trees.'
-        )
-
-    def _latest_common_time(self, target_id: int, source_id: int) -> int:
-        """tf2's ``getLatestCommonTime`` on ids; raises tf2's errors."""
-        if source_id == 0 or target_id == 0:
-            raise LookupException('')
-        caches = self._caches
-        if source_id == target_id:
-            cache = caches[source_id]
-            return cache.latest_stamp_ns if cache is not None else 0
-
-        source_links: list[tuple[int, int]] = []
-        frame = source_id
-        depth = 0
-        common = -1
-        while frame != 0:
-            cache = caches[frame]
-            if cache is None:
-                break
-            stamp, parent = cache.latest
-            if parent == 0:
-                break
-            if stamp != 0 and (common < 0 or stamp < common):
-                common = stamp
-            source_links.append((stamp, parent))
-            frame = parent
-            if frame == target_id:
-                return max(common, 0)
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                raise LookupException(self._loop_text())
-
-        frame = target_id
-        depth = 0
-        common = -1
-        common_parent = 0
-        source_parents = {parent for _, parent in source_links}
-        while True:
-            cache = caches[frame]
-            if cache is None:
-                break
-            stamp, parent = cache.latest
-            if parent == 0:
-                break
-            if stamp != 0 and (common < 0 or stamp < common):
-                common = stamp
-            if parent in source_parents:
-                common_parent = parent
-                break
-            frame = parent
-            if frame == source_id:
-                return max(common, 0)
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                raise LookupException(self._loop_text())
-
-        if common_parent == 0:
-            raise ConnectivityException(self._connectivity_text(source_id, target_id))
-        for stamp, parent in source_links:
-            if stamp != 0 and (common < 0 or stamp < common):
-                common = stamp
-            if parent == common_parent:
-                break
-        return max(common, 0)
-
     def get_latest_common_time(self, target: str, source: str) -> int:
         """
         Return the newest time at which ``target`` and ``source`` can be related (ns).
@@ -588,127 +305,6 @@ class BufferCore:
             target_id = self._validate('get_latest_common_time', target)
             source_id = self._validate('get_latest_common_time', source)
             return self._latest_common_time(target_id, source_id)
-
-    # ------------------------------------------------------------------ the walk
-
-    def _walk_error(self, cache: Cache, time_ns: int, source_id: int, target_id: int) -> None:
-        code, text = cache.explain_failure(time_ns)
-        raise _extrapolation_error(
-            code,
-            f'{text}, when looking up transform from frame [{self._names[source_id]}] to frame '
-            f'[{self._names[target_id]}]',
-        )
-
-    def _walk(self, target_id: int, source_id: int, time_ns: int) -> tuple[Vec3, Quat, int]:
-        """
-        Accumulate ``target_T_source`` at ``time_ns`` (tf2's ``walkToTopParent``).
-
-        :returns: translation, raw (not re-canonicalised) rotation and the resolved time.
-        """
-        if source_id == target_id:
-            return _IDENTITY_T, _IDENTITY_Q, time_ns
-        if time_ns == 0:
-            time_ns = self._latest_common_time(target_id, source_id)
-        caches = self._caches
-
-        # Source side: accumulate top_T_source.
-        outcome, frame, last, _, sx, sy, sz, sqx, sqy, sqz, sqw = _accumulate_side(
-            caches, source_id, 0, target_id, time_ns
-        )
-        if outcome == _SIDE_REACHED_OTHER:
-            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
-        if outcome == _SIDE_LOOP:
-            raise LookupException(self._loop_text())
-        top = last if outcome == _SIDE_REACHED_STOP else frame
-        failed_cache = caches[frame] if outcome == _SIDE_NO_DATA else None
-
-        if target_id == top:
-            # The target is the top itself: the inverse of an identity changes nothing.
-            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
-        # Target side: accumulate top_T_target.
-        outcome, frame, _, depth, tx, ty, tz, tqx, tqy, tqz, tqw = _accumulate_side(
-            caches, target_id, top, source_id, time_ns
-        )
-        if outcome == _SIDE_NO_DATA:
-            self._walk_error(caches[frame], time_ns, source_id, target_id)  # type: ignore[arg-type]
-        if outcome == _SIDE_REACHED_OTHER:
-            iq = (-tqx, -tqy, -tqz, tqw)
-            return math3d.rotate_vector(iq, (-tx, -ty, -tz)), iq, time_ns
-        if outcome == _SIDE_LOOP:
-            raise LookupException(self._loop_text())
-        if outcome == _SIDE_NO_CACHE:
-            if failed_cache is not None:
-                self._walk_error(failed_cache, time_ns, source_id, target_id)
-            raise ConnectivityException(self._connectivity_text(source_id, target_id))
-
-        if not depth:
-            # The target is the top itself: the inverse of an identity changes nothing.
-            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
-        # Full path: (top_T_target)^-1 * top_T_source.
-        iq = (-tqx, -tqy, -tqz, tqw)
-        ix, iy, iz = math3d.rotate_vector(iq, (-tx, -ty, -tz))
-        rx, ry, rz = math3d.rotate_vector(iq, (sx, sy, sz))
-        return (
-            (rx + ix, ry + iy, rz + iz),
-            math3d.quat_multiply(iq, (sqx, sqy, sqz, sqw)),
-            time_ns,
-        )
-
-    def _can_walk(self, target_id: int, source_id: int, time_ns: int) -> str | None:
-        """Run the walk on parents only; return None when possible, else tf2's error text."""
-        if source_id == target_id:
-            return None
-        if time_ns == 0:
-            try:
-                time_ns = self._latest_common_time(target_id, source_id)
-            except TransformException as error:
-                return str(error)
-        caches = self._caches
-        frame = source_id
-        top = frame
-        depth = 0
-        failed_cache: Cache | None = None
-        while frame != 0:
-            cache = caches[frame]
-            if cache is None:
-                top = frame
-                break
-            parent = cache.get_parent(time_ns)
-            if parent == 0:
-                top = frame
-                failed_cache = cache
-                break
-            if frame == target_id:
-                return None
-            top = frame
-            frame = parent
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                return self._loop_text()
-        frame = target_id
-        depth = 0
-        suffix = (
-            f', when looking up transform from frame [{self._names[source_id]}] to frame '
-            f'[{self._names[target_id]}]'
-        )
-        while frame != top:
-            cache = caches[frame]
-            if cache is None:
-                break
-            parent = cache.get_parent(time_ns)
-            if parent == 0:
-                return cache.explain_failure(time_ns)[1] + suffix
-            if frame == source_id:
-                return None
-            frame = parent
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                return self._loop_text()
-        if frame != top:
-            if failed_cache is not None:
-                return failed_cache.explain_failure(time_ns)[1] + suffix
-            return self._connectivity_text(source_id, target_id)
-        return None
 
     # ------------------------------------------------------------------ lookups
 
@@ -751,12 +347,7 @@ class BufferCore:
         return _new_tuple(TransformResult, (translation, q, stamp))  # TransformResult(...)
 
     def lookup_transform_full(
-        self,
-        target: str,
-        target_time_ns: int,
-        source: str,
-        source_time_ns: int,
-        fixed: str,
+        self, target: str, target_time_ns: int, source: str, source_time_ns: int, fixed: str
     ) -> TransformResult:
         """
         Return ``target_T_source`` with ``source`` at one time and ``target`` at another.
@@ -946,62 +537,8 @@ class BufferCore:
 
     # ------------------------------------------------------------------ chain
 
-    def _walk_chain(self, target_id: int, source_id: int, time_ns: int) -> list[int]:
-        """Run the walk recording frames, with tf2's chain pruning (``frame_chain`` output)."""
-        if source_id == target_id:
-            return []
-        self._walk(target_id, source_id, time_ns)  # raises exactly what the walk raises
-        if time_ns == 0:
-            time_ns = self._latest_common_time(target_id, source_id)
-        caches = self._caches
-        chain: list[int] = []
-        frame = source_id
-        top = frame
-        while frame != 0:
-            cache = caches[frame]
-            chain.append(frame)
-            if cache is None:
-                top = frame
-                break
-            parent = cache.get_parent(time_ns)
-            if parent == 0:
-                top = frame
-                break
-            if frame == target_id:
-                return chain
-            top = frame
-            frame = parent
-        reverse: list[int] = []
-        frame = target_id
-        while frame != top:
-            cache = caches[frame]
-            reverse.append(frame)
-            if cache is None:
-                break
-            parent = cache.get_parent(time_ns)
-            if frame == source_id:
-                return reverse
-            frame = parent
-        m = len(reverse)
-        n = len(chain)
-        while m > 0 and n > 0:
-            m -= 1
-            n -= 1
-            if chain[n] != reverse[m]:
-                break
-        if n > 0:
-            del chain[n - 1 :]
-        if m < len(reverse):
-            chain.extend(reversed(reverse[: m + 1]))
-        return chain
-
     def chain(
-        self,
-        target: str,
-        target_time_ns: int,
-        source: str,
-        source_time_ns: int,
-        fixed: str,
+        self, target: str, target_time_ns: int, source: str, source_time_ns: int, fixed: str
     ) -> list[str]:
         """
         Return the frames between ``source`` and ``target`` as tf2's ``_chainAsVector``.
@@ -1086,28 +623,6 @@ class BufferCore:
         return translations, rotations
 
     # ------------------------------------------------------------------ introspection
-
-    def _frame_infos(self) -> list[FrameInfo]:
-        infos = []
-        names = self._names
-        authority = self._authority
-        for frame_id, cache in enumerate(self._caches):
-            if cache is None:
-                continue
-            stamp, parent = cache.latest_time_and_parent()
-            del stamp
-            infos.append(
-                FrameInfo(
-                    names[frame_id],
-                    names[parent] if parent else None,
-                    authority.get(frame_id, NO_AUTHORITY),
-                    cache.is_static,
-                    cache.oldest_stamp_ns,
-                    cache.latest_stamp_ns,
-                    len(cache),
-                )
-            )
-        return infos
 
     def frames_info(self) -> list[FrameInfo]:
         """Return one :class:`FrameInfo` per child frame (frames with a cache), in id order."""

@@ -27,18 +27,27 @@ Conventions (the same as tf2):
 The scalar functions work on plain tuples of floats and follow tf2's arithmetic term by term, so
 results agree with tf2's C++ core to the last bits in most cases.  numpy is used only for
 matrices (:func:`homogeneous_from_transform`) and for the ``*_batch`` helpers that work on
-``(N, 3)`` / ``(N, 4)`` arrays.
+``(N, 3)`` / ``(N, 4)`` arrays.  :func:`quat_multiply` and :func:`rotate_vector` also take
+*lanes*: tuples whose components are numpy arrays (one value per lane) or floats, which is how
+the vectorised walk (:mod:`tf_demo.core._batch`) and the ``*_batch`` helpers use them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 import math
+from typing import overload
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 if TYPE_CHECKING:
     import numpy.typing as npt
+
+    #: One component for many lanes at once (an array), or the same float for every lane.
+    Lane = float | npt.NDArray[np.float64]
+    LaneVec3 = tuple[Lane, Lane, Lane]
+    LaneQuat = tuple[Lane, Lane, Lane, Lane]
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
@@ -87,7 +96,15 @@ __all__ = [
 ]
 
 
-def quat_multiply(a: Quat, b: Quat) -> Quat:
+@overload
+def quat_multiply(a: Quat, b: Quat) -> Quat: ...
+
+
+@overload
+def quat_multiply(a: LaneQuat, b: LaneQuat) -> LaneQuat: ...
+
+
+def quat_multiply(a: LaneQuat, b: LaneQuat) -> LaneQuat:
     """Return the Hamilton product ``a * b`` (``b`` is applied first), as tf2's ``operator*``."""
     ax, ay, az, aw = a
     bx, by, bz, bw = b
@@ -117,7 +134,15 @@ def quat_normalize(q: Quat) -> Quat:
     return (q[0] * inv, q[1] * inv, q[2] * inv, q[3] * inv)
 
 
-def rotate_vector(q: Quat, v: Vec3) -> Vec3:
+@overload
+def rotate_vector(q: Quat, v: Vec3) -> Vec3: ...
+
+
+@overload
+def rotate_vector(q: LaneQuat, v: LaneVec3) -> LaneVec3: ...
+
+
+def rotate_vector(q: LaneQuat, v: LaneVec3) -> LaneVec3:
     """Rotate ``v`` by ``q``: the vector part of ``q * (v, 0) * conj(q)`` (tf2 ``quatRotate``)."""
     qx, qy, qz, qw = q
     vx, vy, vz = v
@@ -350,7 +375,7 @@ def quat_from_matrix(m: Matrix3) -> Quat:
     return (out[0], out[1], out[2], out[3])
 
 
-def canonical_quat(q: Quat) -> Quat:
+def canonical_quat(q: Sequence[float]) -> Quat:
     """
     Return ``q`` as tf2 stores it on insert: normalised and sign-canonicalised.
 
@@ -358,7 +383,7 @@ def canonical_quat(q: Quat) -> Quat:
     sign follows that matrix's diagonal, computed with the same arithmetic; when its trace is
     positive (``w`` dominates) the result is ``q / |q|`` with ``w > 0``, equal to the matrix
     route to about 1e-16; otherwise it is :func:`quat_from_matrix` of :func:`matrix_from_quat`.
-    Zero, infinite or NaN input yields NaN components.
+    Zero, infinite or NaN input yields NaN components.  ``q`` may be any sequence of 4 numbers.
     """
     x, y, z, w = q
     d = x * x + y * y + z * z + w * w
@@ -373,7 +398,7 @@ def canonical_quat(q: Quat) -> Quat:
         if w < 0.0:
             inverse = -inverse
         return (x * inverse, y * inverse, z * inverse, w * inverse)
-    return quat_from_matrix(matrix_from_quat(q))
+    return quat_from_matrix(matrix_from_quat((x, y, z, w)))
 
 
 def homogeneous_from_transform(t: Vec3, q: Quat) -> npt.NDArray[np.float64]:
@@ -406,41 +431,27 @@ def transform_from_homogeneous(matrix: npt.ArrayLike) -> tuple[Vec3, Quat]:
 # --- vectorised helpers on (N, 3) / (N, 4) float64 arrays -----------------------------------
 
 
+def _columns(array: npt.NDArray[np.float64]) -> tuple[npt.NDArray[np.float64], ...]:
+    """Return the last axis of ``array`` as separate component arrays."""
+    return tuple(array[..., i] for i in range(array.shape[-1]))
+
+
 def quat_multiply_batch(
     a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.float64]:
     """Row-wise :func:`quat_multiply` of two ``(N, 4)`` arrays (either may broadcast)."""
-    ax, ay, az, aw = a[..., 0], a[..., 1], a[..., 2], a[..., 3]
-    bx, by, bz, bw = b[..., 0], b[..., 1], b[..., 2], b[..., 3]
-    return np.stack(
-        (
-            aw * bx + ax * bw + ay * bz - az * by,
-            aw * by + ay * bw + az * bx - ax * bz,
-            aw * bz + az * bw + ax * by - ay * bx,
-            aw * bw - ax * bx - ay * by - az * bz,
-        ),
-        axis=-1,
-    )
+    ax, ay, az, aw = _columns(a)
+    bx, by, bz, bw = _columns(b)
+    return np.stack(quat_multiply((ax, ay, az, aw), (bx, by, bz, bw)), axis=-1)
 
 
 def rotate_vector_batch(
     q: npt.NDArray[np.float64], v: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.float64]:
     """Row-wise :func:`rotate_vector` of ``(N, 4)`` quaternions and ``(N, 3)`` vectors."""
-    qx, qy, qz, qw = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    vx, vy, vz = v[..., 0], v[..., 1], v[..., 2]
-    rx = qw * vx + qy * vz - qz * vy
-    ry = qw * vy + qz * vx - qx * vz
-    rz = qw * vz + qx * vy - qy * vx
-    rw = -qx * vx - qy * vy - qz * vz
-    return np.stack(
-        (
-            rw * -qx + rx * qw + ry * -qz - rz * -qy,
-            rw * -qy + ry * qw + rz * -qx - rx * -qz,
-            rw * -qz + rz * qw + rx * -qy - ry * -qx,
-        ),
-        axis=-1,
-    )
+    qx, qy, qz, qw = _columns(q)
+    vx, vy, vz = _columns(v)
+    return np.stack(rotate_vector((qx, qy, qz, qw), (vx, vy, vz)), axis=-1)
 
 
 def compose_batch(

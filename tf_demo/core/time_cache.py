@@ -39,6 +39,8 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left
 from bisect import bisect_right
+from typing import ClassVar
+from typing import Literal
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
@@ -157,7 +159,7 @@ def _older_index(  # noqa: PLR0917 (hot path: positional arguments are fastest)
 class TimeCache:
     """History of one dynamic link, with tf2's ordering, pruning and interpolation."""
 
-    is_static = False
+    is_static: ClassVar[Literal[False]] = False
 
     __slots__ = (
         '_arrays',
@@ -274,7 +276,7 @@ class TimeCache:
         This is tf2's ``findClosest`` plus ``interpolate``: :func:`~tf_demo.core.math3d.lerp` of
         the translation, :func:`~tf_demo.core.math3d.slerp` of the rotation, never across a
         parent change (the older sample is returned instead).  The lookup walk inlines the same
-        step (``buffer_core._accumulate_side``).  Use :meth:`explain_failure` for tf2's error
+        step (``frame_tree.accumulate_side``).  Use :meth:`explain_failure` for tf2's error
         text when None is returned.
         """
         stamps = self._stamps
@@ -433,7 +435,7 @@ class TimeCache:
 class StaticCache:
     """A static link: one sample, valid at every time (tf2 StaticCache)."""
 
-    is_static = True
+    is_static: ClassVar[Literal[True]] = True
 
     __slots__ = ('_sample', 'child_id', 'latest')
 
