@@ -26,7 +26,7 @@ from tf_demo.cli._args import parse_static_transform_args
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._args import whole_number
 from tf_demo.core.math3d import quat_from_rpy
-from tf_demo.ros.node_helpers import rate_error
+from tf_demo.nodes.helpers import rate_error
 from tf_demo.transport.params_c_numbers import c_strtod
 from tf_demo.transport.params_c_numbers import CDouble
 

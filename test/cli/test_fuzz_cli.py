@@ -51,7 +51,7 @@ from tf_demo.cli._snapshot import SnapshotError
 from tf_demo.cli._snapshot import SnapshotTransform
 from tf_demo.cli._snapshot import TOP_KEYS
 from tf_demo.nodes import non_ros_arguments
-from tf_demo.ros.node_helpers import MIN_RATE_HZ
+from tf_demo.nodes.helpers import MIN_RATE_HZ
 from tf_demo.transport.params_c_numbers import c_strtod
 from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import RosArgsError

@@ -20,12 +20,12 @@ import math
 from pathlib import Path
 
 import pytest
+from tf_demo.nodes.helpers import NodeConfigError
 from tf_demo.nodes.static_tf_pub import format_published
 from tf_demo.nodes.static_tf_pub import load_specs_file
 from tf_demo.nodes.static_tf_pub import spec_from_values
 from tf_demo.nodes.static_tf_pub import specs_from_yaml
 from tf_demo.nodes.static_tf_pub import StaticTransformSpec
-from tf_demo.ros.node_helpers import NodeConfigError
 
 REPO = Path(__file__).resolve().parents[2]
 

@@ -16,9 +16,9 @@
 
 from __future__ import annotations
 
+from tf_demo.nodes.helpers import make_transform_stamped
 from tf_demo.nodes.tf_listener import format_failure
 from tf_demo.nodes.tf_listener import format_translation
-from tf_demo.ros.node_helpers import make_transform_stamped
 
 
 def test_listener_formatters() -> None:

@@ -21,11 +21,11 @@ import pytest
 from tf_demo.core.math3d import compose
 from tf_demo.core.math3d import rotate_vector
 from tf_demo.msgs import geometry_msgs
+from tf_demo.nodes.helpers import make_transform_stamped
 from tf_demo.ros import Buffer
 from tf_demo.ros.geometry import do_transform_point
 from tf_demo.ros.geometry import do_transform_pose
 from tf_demo.ros.geometry import do_transform_vector3
-from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.testing.strategies import profile_settings
 from tf_demo.testing.strategies import transforms
 from tf_demo.testing.strategies import translations

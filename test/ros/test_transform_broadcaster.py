@@ -17,7 +17,7 @@
 from __future__ import annotations
 
 import pytest
-from tf_demo.ros.node_helpers import make_transform_stamped
+from tf_demo.nodes.helpers import make_transform_stamped
 from tf_demo.ros.transform_broadcaster import as_transform_list
 
 

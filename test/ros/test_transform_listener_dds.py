@@ -26,11 +26,11 @@ import pytest
 from tf_demo import transport
 from tf_demo.core.exceptions import LookupException
 from tf_demo.core.exceptions import TimeoutException
+from tf_demo.nodes.helpers import make_transform_stamped
 from tf_demo.ros import Buffer
 from tf_demo.ros import StaticTransformBroadcaster
 from tf_demo.ros import TransformBroadcaster
 from tf_demo.ros import TransformListener
-from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.transport.clock import Duration
 from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import rosgraph_msgs

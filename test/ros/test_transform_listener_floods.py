@@ -132,7 +132,7 @@ def test_a_subscription_logs_a_flood_of_undecodable_samples_once(
 
 def make_good() -> Any:
     """Return a valid ``world`` -> ``good`` transform."""
-    from tf_demo.ros.node_helpers import make_transform_stamped
+    from tf_demo.nodes.helpers import make_transform_stamped
 
     return make_transform_stamped('world', 'good', 1, (7.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
 
@@ -149,8 +149,8 @@ def test_rejected_transforms_are_throttled_per_source_and_kind(
     ros: None, capfd: pytest.CaptureFixture[str]
 ) -> None:
     """Direct inserts and each named writer get their own first line; the rest are counted."""
+    from tf_demo.nodes.helpers import make_transform_stamped
     from tf_demo.ros import Buffer
-    from tf_demo.ros.node_helpers import make_transform_stamped
 
     buffer = Buffer()
     nan = make_transform_stamped('a', 'b', 1, (float('nan'), 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))

@@ -32,7 +32,7 @@ import time
 from typing import Any
 
 from tf_demo import transport
-from tf_demo.ros.node_helpers import make_transform_stamped
+from tf_demo.nodes.helpers import make_transform_stamped
 from tf_demo.transport.messages import tf2_msgs
 from tf_demo.transport.qos import DurabilityPolicy
 from tf_demo.transport.qos import QoSProfile

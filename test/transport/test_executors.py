@@ -34,10 +34,10 @@ from typing import Any
 import pytest
 from tf_demo import transport
 from tf_demo.core.exceptions import TransformException
+from tf_demo.nodes.helpers import make_transform_stamped
 from tf_demo.ros import Buffer
 from tf_demo.ros import StaticTransformBroadcaster
 from tf_demo.ros import TransformListener
-from tf_demo.ros.node_helpers import make_transform_stamped
 from tf_demo.transport.callback_groups import MutuallyExclusiveCallbackGroup
 from tf_demo.transport.callback_groups import ReentrantCallbackGroup
 from tf_demo.transport.clock import Duration

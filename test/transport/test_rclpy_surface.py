@@ -762,7 +762,7 @@ def test_field_checker_rejects_what_rclpys_generated_setters_reject() -> None:
 @pytest.mark.standalone  # under rclpy, rclpy's own setters check the fields
 def test_transform_helpers_give_rclpy_valid_messages_even_from_ints_and_numpy() -> None:
     """make_transform_stamped / fill_transform_stamped convert ints and numpy scalars."""
-    from tf_demo.ros.node_helpers import make_transform_stamped
+    from tf_demo.nodes.helpers import make_transform_stamped
 
     message = make_transform_stamped(
         'odom', 'base_link', 1_500_000_000, (1, np.int64(2), np.float32(3)), (0, 0, 0, 1)
@@ -777,9 +777,9 @@ def test_odometry_and_geometry_outputs_are_rclpy_valid() -> None:
     from tf_demo.msgs import cdr
     from tf_demo.msgs import geometry_msgs
     from tf_demo.msgs import nav_msgs
+    from tf_demo.nodes.helpers import make_transform_stamped
     from tf_demo.nodes.odom_tf_broadcaster import transform_from_odometry
     from tf_demo.ros import geometry
-    from tf_demo.ros.node_helpers import make_transform_stamped
 
     odometry = nav_msgs.Odometry()
     odometry.header.stamp.sec = 7
@@ -811,8 +811,8 @@ def test_odometry_and_geometry_outputs_are_rclpy_valid() -> None:
 @pytest.mark.standalone  # under rclpy, rclpy's own setters check the fields
 def test_buffer_lookup_result_is_rclpy_valid() -> None:
     """Buffer.lookup_transform returns a TransformStamped that rclpy would accept."""
+    from tf_demo.nodes.helpers import make_transform_stamped
     from tf_demo.ros import Buffer
-    from tf_demo.ros.node_helpers import make_transform_stamped
     from tf_demo.transport.clock import Time
 
     buffer = Buffer()
@@ -1064,7 +1064,7 @@ def standalone_world(dds_env: dict[str, str]) -> Iterator[Any]:
 
 def _one_transform_message() -> Any:
     from tf_demo.msgs import tf2_msgs
-    from tf_demo.ros.node_helpers import make_transform_stamped
+    from tf_demo.nodes.helpers import make_transform_stamped
 
     return tf2_msgs.TFMessage(
         transforms=[make_transform_stamped('a', 'b', 1, (1.0, 0.0, 0.0), (0, 0, 0, 1))]

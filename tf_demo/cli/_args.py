@@ -30,7 +30,7 @@ import math
 import re
 
 from tf_demo.core.math3d import quat_from_rpy
-from tf_demo.ros.node_helpers import rate_error
+from tf_demo.nodes.helpers import rate_error
 from tf_demo.transport.params_c_numbers import c_strtod
 from tf_demo.transport.params_c_numbers import CDouble
 

@@ -32,7 +32,6 @@ from __future__ import annotations
 import secrets
 import string
 import sys
-from typing import Any
 from typing import TYPE_CHECKING
 
 from tf_demo.cli._args import parse_static_transform_args
@@ -65,7 +64,7 @@ def static_broadcaster_qos(node: Node) -> QoSProfile:
     tf2_ros' C++ StaticTransformBroadcaster publishes with ``QosOverridingOptions`` for depth,
     history and reliability.
     """
-    from tf_demo.ros.node_helpers import declare_qos_overrides
+    from tf_demo.nodes.helpers import declare_qos_overrides
     from tf_demo.transport.qos import StaticBroadcasterQoS
 
     profile: QoSProfile = declare_qos_overrides(
@@ -79,7 +78,7 @@ def make_node(
     rotation: tuple[float, float, float, float],
     frame_id: str,
     child_frame_id: str,
-) -> Any:
+) -> Node:
     """Create the node, publish the transform once (latched) and log the start-up line."""
     from tf_demo import transport
     from tf_demo.msgs.convert import fill_transform_stamped
@@ -117,10 +116,9 @@ def make_node(
         translation,
         rotation,
     )
-    broadcaster = StaticTransformBroadcaster(node, static_broadcaster_qos(node))
-    broadcaster.send_transform(message)
+    # The node owns the broadcaster's latched publisher (rclpy's and the standalone node alike).
+    StaticTransformBroadcaster(node, static_broadcaster_qos(node)).send_transform(message)
     node.get_logger().info(format_static_info(translation, rotation, frame_id, child_frame_id))
-    node.static_broadcaster = broadcaster
     return node
 
 

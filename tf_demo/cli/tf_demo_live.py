@@ -91,7 +91,7 @@ def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
 
 
 def _rate(text: str) -> float:
-    from tf_demo.ros.node_helpers import rate_error
+    from tf_demo.nodes.helpers import rate_error
 
     value = _number(text)
     problem = rate_error(value)
@@ -262,6 +262,7 @@ def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
     from tf_demo.ros.buffer import Buffer
     from tf_demo.ros.transform_listener import TransformListener
     from tf_demo.transport.clock import Time
+    from tf_demo.transport.executors import SingleThreadedExecutor
 
     children: list[Child] = []
     failure: str | None = None
@@ -282,7 +283,7 @@ def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
             print(format_live_transform(options.target, options.source, transform), flush=True)
 
         node.create_timer(1.0 / options.rate, print_once)
-        executor = transport.SingleThreadedExecutor()
+        executor = SingleThreadedExecutor()
         executor.add_node(node)
         deadline = None if options.duration is None else time.monotonic() + options.duration
         while deadline is None or time.monotonic() < deadline:

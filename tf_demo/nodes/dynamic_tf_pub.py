@@ -29,13 +29,13 @@ from typing import Any
 
 from tf_demo.core.math3d import Quat
 from tf_demo.core.math3d import Vec3
-from tf_demo.ros.node_helpers import as_float
-from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import as_rate_hz
-from tf_demo.ros.node_helpers import declare_checked
-from tf_demo.ros.node_helpers import make_transform_stamped
-from tf_demo.ros.node_helpers import now_ns
-from tf_demo.ros.node_helpers import require_distinct_frames
+from tf_demo.nodes.helpers import as_float
+from tf_demo.nodes.helpers import as_frame
+from tf_demo.nodes.helpers import as_rate_hz
+from tf_demo.nodes.helpers import declare_checked
+from tf_demo.nodes.helpers import make_transform_stamped
+from tf_demo.nodes.helpers import now_ns
+from tf_demo.nodes.helpers import require_distinct_frames
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import NodeConfigError
 from tf_demo.transport import run_node

@@ -24,14 +24,14 @@ from __future__ import annotations
 
 import sys
 
-from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import as_period_s
-from tf_demo.ros.node_helpers import as_vector3
-from tf_demo.ros.node_helpers import declare_checked
-from tf_demo.ros.node_helpers import make_transform_stamped
-from tf_demo.ros.node_helpers import now_ns
-from tf_demo.ros.node_helpers import require_distinct_frames
-from tf_demo.ros.node_helpers import rotation_from_values
+from tf_demo.nodes.helpers import as_frame
+from tf_demo.nodes.helpers import as_period_s
+from tf_demo.nodes.helpers import as_vector3
+from tf_demo.nodes.helpers import declare_checked
+from tf_demo.nodes.helpers import make_transform_stamped
+from tf_demo.nodes.helpers import now_ns
+from tf_demo.nodes.helpers import require_distinct_frames
+from tf_demo.nodes.helpers import rotation_from_values
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import run_node
 from tf_demo.transport.node import Node

@@ -36,7 +36,7 @@ import sys
 from typing import Any
 
 from tf_demo.nodes import non_ros_arguments
-from tf_demo.ros.node_helpers import rate_error
+from tf_demo.nodes.helpers import rate_error
 from tf_demo.transport import run_node
 from tf_demo.transport.messages import sensor_msgs
 from tf_demo.transport.messages import std_msgs

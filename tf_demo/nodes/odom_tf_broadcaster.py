@@ -25,10 +25,10 @@ from __future__ import annotations
 import sys
 from typing import Any
 
-from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import declare_checked
-from tf_demo.ros.node_helpers import declare_flexible
-from tf_demo.ros.node_helpers import NodeConfigError
+from tf_demo.nodes.helpers import as_frame
+from tf_demo.nodes.helpers import declare_checked
+from tf_demo.nodes.helpers import declare_flexible
+from tf_demo.nodes.helpers import NodeConfigError
 from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import run_node
 from tf_demo.transport.node import Node

@@ -43,7 +43,7 @@ from typing import Any
 
 from tf_demo.msgs.cdr import TfMessageEncoder
 from tf_demo.nodes import non_ros_arguments
-from tf_demo.ros.node_helpers import declare_qos_overrides
+from tf_demo.nodes.helpers import declare_qos_overrides
 from tf_demo.transport import run_node
 from tf_demo.transport.logging import get_logger
 from tf_demo.transport.messages import geometry_msgs

@@ -27,10 +27,10 @@ from typing import Any
 
 from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import transform_stamped_args
+from tf_demo.nodes.helpers import as_frame
+from tf_demo.nodes.helpers import as_period_s
+from tf_demo.nodes.helpers import declare_checked
 from tf_demo.ros.buffer import Buffer
-from tf_demo.ros.node_helpers import as_frame
-from tf_demo.ros.node_helpers import as_period_s
-from tf_demo.ros.node_helpers import declare_checked
 from tf_demo.ros.transform_listener import TransformListener
 from tf_demo.transport import run_node
 from tf_demo.transport.clock import Time

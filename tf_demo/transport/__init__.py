@@ -15,10 +15,14 @@
 """
 The node API every executable is written against, on rclpy or on the standalone DDS backend.
 
-``init``, ``shutdown``, ``ok``, ``spin``, ``spin_once``, ``create_node``, ``Node`` and the
-executors come from the backend chosen by :func:`tf_demo.transport.backend.backend_name`
-(``TF_DEMO_BACKEND=rclpy|dds``, else rclpy when it imports, else DDS); the backend is imported
-on first use, so importing this package stays cheap. :func:`run_node` is the shared ``main()``.
+``init``, ``shutdown``, ``ok``, ``spin``, ``spin_once`` and ``create_node`` call the backend
+chosen by :func:`tf_demo.transport.backend.backend_name` (``TF_DEMO_BACKEND=rclpy|dds``, else
+rclpy when it imports, else DDS); the backend is imported on first use, so importing this
+package stays cheap. The world's classes have their own modules, each choosing once:
+:mod:`~tf_demo.transport.node` (``Node``), :mod:`~tf_demo.transport.executors`,
+:mod:`~tf_demo.transport.callback_groups`, :mod:`~tf_demo.transport.clock`,
+:mod:`~tf_demo.transport.qos`, :mod:`~tf_demo.transport.parameters` and
+:mod:`~tf_demo.transport.logging`. :func:`run_node` is the shared ``main()``.
 """
 
 from __future__ import annotations
@@ -33,6 +37,7 @@ import threading
 from types import FrameType
 from types import ModuleType
 from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.transport.backend import backend_name
 from tf_demo.transport.backend import BackendError
@@ -41,16 +46,15 @@ from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import ROS_ARGS_USAGE
 from tf_demo.transport.ros_args import RosArgsError
 
+if TYPE_CHECKING:
+    from tf_demo.transport.executors import Executor
+    from tf_demo.transport.future import Future
+    from tf_demo.transport.node import Node
+
 __all__ = [
     'BackendError',
-    'ExternalShutdownException',
-    'MultiThreadedExecutor',
-    'MutuallyExclusiveCallbackGroup',
-    'Node',
     'NodeConfigError',
-    'ReentrantCallbackGroup',
     'RosArgsError',
-    'SingleThreadedExecutor',
     'StopRequest',
     'backend_module',
     'backend_name',
@@ -69,32 +73,11 @@ _BACKEND_MODULES = {
     'rclpy': 'tf_demo.transport.rclpy_backend',
     'dds': 'tf_demo.transport.dds_backend',
 }
-_REEXPORTED = frozenset(
-    {
-        'Node',
-        'ExternalShutdownException',
-        'SingleThreadedExecutor',
-        'MultiThreadedExecutor',
-        'ReentrantCallbackGroup',
-        'MutuallyExclusiveCallbackGroup',
-    }
-)
 
 
 def backend_module() -> ModuleType:
     """Return the selected backend's module (imported on first use)."""
     return importlib.import_module(_BACKEND_MODULES[backend_name()])
-
-
-def __getattr__(name: str) -> Any:
-    if name in _REEXPORTED:
-        module = backend_module()
-        if not hasattr(module, name):
-            msg = f'the {backend_name()} backend has no {name}'
-            raise AttributeError(msg)
-        return getattr(module, name)
-    msg = f'module {__name__!r} has no attribute {name!r}'
-    raise AttributeError(msg)
 
 
 def init(args: Sequence[str] | None = None) -> None:
@@ -132,18 +115,23 @@ def ok() -> bool:
     return bool(backend_module().ok())
 
 
-def spin(node: Any, executor: Any = None) -> None:
+def spin(node: Node, executor: Executor | None = None) -> None:
     """Run ``node``'s callbacks until shutdown."""
     backend_module().spin(node, executor=executor)
 
 
-def spin_once(node: Any, *, executor: Any = None, timeout_sec: float | None = None) -> None:
+def spin_once(
+    node: Node, *, executor: Executor | None = None, timeout_sec: float | None = None
+) -> None:
     """Run at most one of ``node``'s ready callbacks, waiting up to ``timeout_sec``."""
     backend_module().spin_once(node, executor=executor, timeout_sec=timeout_sec)
 
 
 def spin_until_future_complete(
-    node: Any, future: Any, executor: Any = None, timeout_sec: float | None = None
+    node: Node,
+    future: Future[Any],
+    executor: Executor | None = None,
+    timeout_sec: float | None = None,
 ) -> None:
     """Run ``node``'s callbacks until ``future`` is done or ``timeout_sec`` passed (as rclpy)."""
     backend_module().spin_until_future_complete(
@@ -151,9 +139,10 @@ def spin_until_future_complete(
     )
 
 
-def create_node(node_name: str, **kwargs: Any) -> Any:
+def create_node(node_name: str, **kwargs: Any) -> Node:
     """Create a node of the selected backend (rclpy ``Node`` keyword arguments)."""
-    return backend_module().create_node(node_name, **kwargs)
+    node: Node = backend_module().create_node(node_name, **kwargs)
+    return node
 
 
 def _program_name(argv: Sequence[str]) -> str:
@@ -219,7 +208,7 @@ class StopRequest:
         self.previous.clear()
 
 
-def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> int:
+def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:
     """
     Run one node as an executable's ``main()`` and return the exit code.
 
@@ -242,7 +231,7 @@ def run_node(factory: Callable[[], Any], args: Sequence[str] | None = None) -> i
 
 
 def _run_installed(
-    factory: Callable[[], Any], argv: list[str], program: str, stop: StopRequest
+    factory: Callable[[], Node], argv: list[str], program: str, stop: StopRequest
 ) -> int:
     """Initialise, build, spin and finish one node (:func:`run_node` with its handlers set)."""
     try:
@@ -251,8 +240,8 @@ def _run_installed(
         print(ROS_ARGS_USAGE.replace('<executable>', program), file=sys.stderr)
         print(f'{program}: error: {error}', file=sys.stderr)
         return 1
-    node: Any = None
-    executor: Any = None
+    node: Node | None = None
+    executor: Executor | None = None
     try:
         # The executor is made first: under rclpy a Ctrl-C shuts the context down from
         # rclpy's signal thread, and an executor built on a context going away prints
@@ -288,7 +277,7 @@ def _run_installed(
     return 0
 
 
-def _finish(executor: Any, node: Any) -> None:
+def _finish(executor: Executor | None, node: Node | None) -> None:
     """
     Shut the executor down, destroy the node (flushing its publishers) and the backend, quietly.
 

@@ -22,7 +22,7 @@ import re
 from conftest import executable_command
 from conftest import run_captured
 import pytest
-from tf_demo.ros.node_helpers import NodeConfigError
+from tf_demo.nodes.helpers import NodeConfigError
 
 
 @pytest.mark.parametrize(
@@ -39,8 +39,8 @@ def test_timer_rates_and_periods_a_timer_cannot_hold_are_one_line(
     name: str, value: float, problem: str
 ) -> None:
     """A rate of 1e-300 Hz (a period beyond int64 ns) is refused before a timer is made."""
-    from tf_demo.ros.node_helpers import as_period_s
-    from tf_demo.ros.node_helpers import as_rate_hz
+    from tf_demo.nodes.helpers import as_period_s
+    from tf_demo.nodes.helpers import as_rate_hz
 
     check = as_rate_hz if name == 'rate' else as_period_s
     with pytest.raises(NodeConfigError, match=re.escape(problem)):
