@@ -41,6 +41,8 @@ import rclpy.qos
 import rclpy.time
 import rclpy.time_source
 import rclpy.utilities
+from tf_demo.transport.ros_args import explain_rcl_error
+from tf_demo.transport.ros_args import RosArgsError
 
 shutdown = rclpy.shutdown
 try_shutdown = rclpy.utilities.try_shutdown
@@ -66,10 +68,6 @@ def init(*, args: list[str] | None = None, **kwargs: Any) -> None:
     rcl's text on one line, shortened and with advice (``explain_rcl_error``), so ``run_node``
     reports it as it reports any bad argument; other failures are rclpy's own.
     """
-    # Imported here: ros_args imports logging, which imports this module.
-    from tf_demo.transport.ros_args import explain_rcl_error
-    from tf_demo.transport.ros_args import RosArgsError
-
     try:
         rclpy.init(args=args, **kwargs)
     except _rclpy_impl.UnknownROSArgsError as error:
