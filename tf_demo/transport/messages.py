@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import importlib
 from types import ModuleType
+from typing import TYPE_CHECKING
 
 from tf_demo.transport.backend import rclpy_world
 
@@ -53,10 +54,20 @@ def service_module(package: str) -> ModuleType:
     return importlib.import_module(f'tf_demo.msgs.{package}')
 
 
-builtin_interfaces = message_module('builtin_interfaces')
-geometry_msgs = message_module('geometry_msgs')
-nav_msgs = message_module('nav_msgs')
-rosgraph_msgs = message_module('rosgraph_msgs')
-sensor_msgs = message_module('sensor_msgs')
-std_msgs = message_module('std_msgs')
-tf2_msgs = message_module('tf2_msgs')
+# The type checker sees the standalone modules, whose classes follow rclpy's name for name.
+if TYPE_CHECKING or not rclpy_world():
+    from tf_demo.msgs import builtin_interfaces
+    from tf_demo.msgs import geometry_msgs
+    from tf_demo.msgs import nav_msgs
+    from tf_demo.msgs import rosgraph_msgs
+    from tf_demo.msgs import sensor_msgs
+    from tf_demo.msgs import std_msgs
+    from tf_demo.msgs import tf2_msgs
+else:  # pragma: no cover - needs a ROS 2 installation
+    builtin_interfaces = message_module('builtin_interfaces')
+    geometry_msgs = message_module('geometry_msgs')
+    nav_msgs = message_module('nav_msgs')
+    rosgraph_msgs = message_module('rosgraph_msgs')
+    sensor_msgs = message_module('sensor_msgs')
+    std_msgs = message_module('std_msgs')
+    tf2_msgs = message_module('tf2_msgs')
