@@ -26,6 +26,7 @@ import threading
 import time
 from typing import Any
 
+from conftest import PARAMETER_SERVICES
 from conftest import STANDALONE_ONLY
 import pytest
 
@@ -328,17 +329,7 @@ def test_parameter_services_follow_rclpy(world: None) -> None:
     node = parameter_node()
     caller = dds_backend.DdsNode('caller', start_parameter_services=False)
     names = sorted(s.srv_name for s in node.services)
-    assert names == [
-        f'/params/{suffix}'
-        for suffix in (
-            'describe_parameters',
-            'get_parameter_types',
-            'get_parameters',
-            'list_parameters',
-            'set_parameters',
-            'set_parameters_atomically',
-        )
-    ]
+    assert names == [f'/params/{suffix}' for suffix in PARAMETER_SERVICES]
     events: list[Any] = []
     caller.create_subscription(
         rcl_interfaces.ParameterEvent,

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 import sys
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.core.math3d import Quat
 from tf_demo.core.math3d import Vec3
@@ -40,6 +40,10 @@ from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import NodeConfigError
 from tf_demo.transport import run_node
 from tf_demo.transport.node import Node
+
+if TYPE_CHECKING:
+    from tf_demo.transport.parameters import Parameter
+    from tf_demo.transport.parameters import SetParametersResult
 
 NODE_NAME = 'dynamic_tf_pub'
 
@@ -73,7 +77,7 @@ class DynamicTfPublisher(Node):
             f'{self.radius:g} m at {self.rate:g} Hz'
         )
 
-    def _check_radius(self, parameters: list[Any]) -> Any:
+    def _check_radius(self, parameters: list[Parameter]) -> SetParametersResult:
         """Accept a new ``radius`` only when it is a finite number (as at start-up)."""
         from tf_demo.transport.parameters import SetParametersResult
 
@@ -85,7 +89,7 @@ class DynamicTfPublisher(Node):
                     return SetParametersResult(successful=False, reason=str(error))
         return SetParametersResult(successful=True)
 
-    def _take_radius(self, parameters: list[Any]) -> None:
+    def _take_radius(self, parameters: list[Parameter]) -> None:
         """Use a ``radius`` that was set from the next transform on."""
         for parameter in parameters:
             if parameter.name == 'radius':

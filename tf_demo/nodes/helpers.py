@@ -25,7 +25,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from collections.abc import Sequence
 import math
-from typing import Any
+from typing import TYPE_CHECKING
 from typing import TypeVar
 
 from tf_demo.core.math3d import Quat
@@ -33,6 +33,11 @@ from tf_demo.core.math3d import quat_from_rpy
 from tf_demo.core.math3d import Vec3
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.transport.backend import NodeConfigError
+
+if TYPE_CHECKING:
+    from tf_demo.msgs.geometry_msgs import TransformStamped
+    from tf_demo.transport.node import Node
+    from tf_demo.transport.qos import QoSProfile
 
 __all__ = [
     'MAX_PERIOD_S',
@@ -56,7 +61,7 @@ __all__ = [
 T = TypeVar('T')
 
 
-def declare_flexible(node: Any, name: str, default: Any) -> Any:
+def declare_flexible(node: Node, name: str, default: object) -> object:
     """Declare ``name`` with ``default`` and dynamic typing; return its value."""
     from tf_demo.transport.parameters import ParameterDescriptor
 
@@ -64,7 +69,9 @@ def declare_flexible(node: Any, name: str, default: Any) -> Any:
     return node.declare_parameter(name, default, descriptor).value
 
 
-def declare_checked(node: Any, name: str, default: Any, check: Callable[[str, Any], T]) -> T:
+def declare_checked(
+    node: Node, name: str, default: object, check: Callable[[str, object], T]
+) -> T:
     """Declare ``name`` as :func:`declare_flexible` does; return ``check(name, value)``."""
     return check(name, declare_flexible(node, name, default))
 
@@ -76,7 +83,7 @@ def require_distinct_frames(parent_frame: str, child_frame: str) -> None:
         raise NodeConfigError(msg)
 
 
-def as_float(name: str, value: Any) -> float:
+def as_float(name: str, value: object) -> float:
     """Return ``value`` as a finite float, or raise a one-line error naming ``name``."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         msg = f'parameter {name!r} must be a number, got {_show(value)}'
@@ -97,7 +104,7 @@ def _finite_float(value: float) -> float | None:
     return number if math.isfinite(number) else None
 
 
-def as_positive_float(name: str, value: Any) -> float:
+def as_positive_float(name: str, value: object) -> float:
     """Return ``value`` as a float > 0, or raise a one-line error naming ``name``."""
     number = as_float(name, value)
     if number <= 0.0:
@@ -120,7 +127,7 @@ def rate_error(rate_hz: float) -> str | None:
     return None
 
 
-def as_rate_hz(name: str, value: Any) -> float:
+def as_rate_hz(name: str, value: object) -> float:
     """Return ``value`` as a rate a timer can run at (see :func:`rate_error`), or raise."""
     number = as_float(name, value)
     problem = rate_error(number)
@@ -130,7 +137,7 @@ def as_rate_hz(name: str, value: Any) -> float:
     return number
 
 
-def as_period_s(name: str, value: Any) -> float:
+def as_period_s(name: str, value: object) -> float:
     """Return ``value`` as a timer period in seconds: > 0 and within int64 nanoseconds."""
     number = as_positive_float(name, value)
     if number > MAX_PERIOD_S:
@@ -139,7 +146,7 @@ def as_period_s(name: str, value: Any) -> float:
     return number
 
 
-def as_frame(name: str, value: Any) -> str:
+def as_frame(name: str, value: object) -> str:
     """Return a valid tf2 frame id (non-empty, no leading '/'), or raise naming ``name``."""
     if not isinstance(value, str) or not value.strip():
         msg = f'parameter {name!r} must be a non-empty frame id, got {value!r}'
@@ -150,7 +157,7 @@ def as_frame(name: str, value: Any) -> str:
     return value
 
 
-def as_vector3(name: str, value: Any) -> Vec3:
+def as_vector3(name: str, value: object) -> Vec3:
     """Return three finite floats, or raise a one-line error naming ``name``."""
     values = _number_list(name, value)
     if len(values) != 3:
@@ -159,7 +166,7 @@ def as_vector3(name: str, value: Any) -> Vec3:
     return values[0], values[1], values[2]
 
 
-def rotation_from_values(name: str, value: Any) -> Quat:
+def rotation_from_values(name: str, value: object) -> Quat:
     """
     Return a unit quaternion (x, y, z, w) from 3 numbers (roll, pitch, yaw) or 4 (x, y, z, w).
 
@@ -181,7 +188,7 @@ def rotation_from_values(name: str, value: Any) -> Quat:
     raise NodeConfigError(msg)
 
 
-def _number_list(name: str, value: Any) -> list[float]:
+def _number_list(name: str, value: object) -> list[float]:
     if hasattr(value, 'tolist'):
         value = value.tolist()
     if isinstance(value, (str, bytes)) or not isinstance(value, Sequence):
@@ -205,14 +212,14 @@ MAX_SHOWN_CHARS = 200
 _HUGE_INT_BITS = 256
 
 
-def _show_one(value: Any) -> str:
+def _show_one(value: object) -> str:
     """``repr`` of one value; an integer too long to print usefully is described instead."""
     if isinstance(value, int) and value.bit_length() > _HUGE_INT_BITS:
         return f'<an integer of about {int(value.bit_length() * math.log10(2)) + 1} digits>'
     return repr(value)
 
 
-def _show(value: Any) -> str:
+def _show(value: object) -> str:
     """``repr`` of a parameter value for an error, huge integers described, cut to a length."""
     if hasattr(value, 'tolist'):
         value = value.tolist()
@@ -225,7 +232,7 @@ def _show(value: Any) -> str:
 
 def make_transform_stamped(
     parent: str, child: str, stamp_ns: int, translation: Sequence[float], rotation: Sequence[float]
-) -> Any:
+) -> TransformStamped:
     """Build the world's ``geometry_msgs/TransformStamped`` for target_T_source values."""
     from tf_demo.transport.messages import geometry_msgs
 
@@ -235,8 +242,8 @@ def make_transform_stamped(
 
 
 def declare_qos_overrides(
-    node: Any, topic: str, entity: str, profile: Any, policies: Sequence[str]
-) -> Any:
+    node: Node, topic: str, entity: str, profile: QoSProfile, policies: Sequence[str]
+) -> QoSProfile:
     """
     Apply rclcpp's ``qos_overrides.<topic>.<entity>.<policy>`` parameters to ``profile``.
 
@@ -250,7 +257,7 @@ def declare_qos_overrides(
     from tf_demo.transport.qos import HistoryPolicy
     from tf_demo.transport.qos import ReliabilityPolicy
 
-    enums: dict[str, Any] = {
+    enums: dict[str, type[HistoryPolicy | ReliabilityPolicy | DurabilityPolicy]] = {
         'history': HistoryPolicy,
         'reliability': ReliabilityPolicy,
         'durability': DurabilityPolicy,
@@ -274,6 +281,6 @@ def declare_qos_overrides(
     return profile
 
 
-def now_ns(node: Any) -> int:
+def now_ns(node: Node) -> int:
     """Return the node clock's current time in integer nanoseconds."""
     return int(node.get_clock().now().nanoseconds)

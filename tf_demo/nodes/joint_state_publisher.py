@@ -38,6 +38,7 @@ from typing import Any
 from tf_demo.nodes import non_ros_arguments
 from tf_demo.nodes.helpers import rate_error
 from tf_demo.transport import run_node
+from tf_demo.transport.messages import builtin_interfaces
 from tf_demo.transport.messages import sensor_msgs
 from tf_demo.transport.messages import std_msgs
 from tf_demo.transport.node import Node
@@ -362,7 +363,7 @@ class JointStatePublisher(Node):
         for warning in self._table.warnings:
             self.get_logger().warning(warning)
 
-    def _on_description(self, message: Any) -> None:
+    def _on_description(self, message: std_msgs.String) -> None:
         try:
             model = RobotModel.from_string(message.data, source='robot_description')
         except UrdfError as error:
@@ -370,7 +371,7 @@ class JointStatePublisher(Node):
             return
         self._configure(model)
 
-    def _on_source(self, message: Any) -> None:
+    def _on_source(self, message: sensor_msgs.JointState) -> None:
         self._table.apply_source(message.name, message.position, message.velocity, message.effort)
 
     def _on_timer(self) -> None:
@@ -384,10 +385,10 @@ class JointStatePublisher(Node):
 
 
 def joint_state_message(
-    joint_state_type: type,
-    stamp: Any,
+    joint_state_type: type[sensor_msgs.JointState],
+    stamp: builtin_interfaces.Time,
     fields: tuple[list[str], list[float], list[float], list[float]],
-) -> Any:
+) -> sensor_msgs.JointState:
     """
     Build the world's ``sensor_msgs/JointState`` from :meth:`JointStateTable.message_fields`.
 

@@ -23,7 +23,7 @@ message fall back to the ``odom_frame`` (``odom``) and ``base_frame`` (``base_li
 from __future__ import annotations
 
 import sys
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.nodes.helpers import as_frame
 from tf_demo.nodes.helpers import declare_checked
@@ -33,13 +33,20 @@ from tf_demo.ros.transform_broadcaster import TransformBroadcaster
 from tf_demo.transport import run_node
 from tf_demo.transport.node import Node
 
+if TYPE_CHECKING:
+    from tf_demo.msgs.geometry_msgs import TransformStamped
+    from tf_demo.msgs.nav_msgs import Odometry
+
 NODE_NAME = 'odom_tf_broadcaster'
 ODOM_QOS_DEPTH = 10
 
 
 def transform_from_odometry(
-    odometry: Any, transform_type: type, default_parent: str, default_child: str
-) -> Any:
+    odometry: Odometry,
+    transform_type: type[TransformStamped],
+    default_parent: str,
+    default_child: str,
+) -> TransformStamped:
     """
     Build a ``TransformStamped`` equal to the odometry pose (the message is not modified).
 
@@ -83,7 +90,7 @@ class OdomTfBroadcaster(Node):
             nav_msgs.Odometry, topic, self.on_odometry, ODOM_QOS_DEPTH
         )
 
-    def on_odometry(self, odometry: Any) -> None:
+    def on_odometry(self, odometry: Odometry) -> None:
         """Publish the transform of one odometry message."""
         self.broadcaster.send_transform(
             transform_from_odometry(

@@ -23,7 +23,7 @@ and transformed with :meth:`tf_demo.ros.Buffer.transform`.
 from __future__ import annotations
 
 import sys
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.core.exceptions import TransformException
 from tf_demo.nodes.helpers import as_frame
@@ -35,10 +35,13 @@ from tf_demo.ros.transform_listener import TransformListener
 from tf_demo.transport import run_node
 from tf_demo.transport.node import Node
 
+if TYPE_CHECKING:
+    from tf_demo.msgs.geometry_msgs import PointStamped
+
 NODE_NAME = 'point_transformer'
 
 
-def format_point(source: str, target: str, point_in: Any, point_out: Any) -> str:
+def format_point(source: str, target: str, point_in: PointStamped, point_out: PointStamped) -> str:
     """Log line: the point in the source frame and in the target frame."""
     a, b = point_in.point, point_out.point
     return (

@@ -46,6 +46,7 @@ from tf_demo.nodes import non_ros_arguments
 from tf_demo.nodes.helpers import declare_qos_overrides
 from tf_demo.transport import run_node
 from tf_demo.transport.logging import get_logger
+from tf_demo.transport.messages import builtin_interfaces
 from tf_demo.transport.messages import geometry_msgs
 from tf_demo.transport.messages import sensor_msgs
 from tf_demo.transport.messages import std_msgs
@@ -281,7 +282,7 @@ class RobotStatePublisher(Node):
         self._throttle = JointStateThrottle()
         self._dropped_log = DroppedMessageLog()
         self._encoder = TfMessageEncoder(self._frame_prefix)
-        self._static: dict[str, Any] = {}
+        self._static: dict[str, geometry_msgs.TransformStamped] = {}
         self._tf_pub = self.create_publisher(
             tf2_msgs.TFMessage,
             '/tf',
@@ -335,18 +336,17 @@ class RobotStatePublisher(Node):
         prefix = self._frame_prefix
         for parent, child, translation, rotation in self._model.static_transforms():
             message = _transform_stamped(
-                geometry_msgs,
-                stamp,
-                (prefix + parent, prefix + child, translation, rotation),
+                stamp, (prefix + parent, prefix + child, translation, rotation)
             )
             self._static[message.child_frame_id] = message
         self._tf_static_pub.publish(tf2_msgs.TFMessage(transforms=list(self._static.values())))
 
     # -- parameters ----------------------------------------------------------------------
-    def _on_set_parameters(self, parameters: list[Any]) -> Any:
+    def _on_set_parameters(self, parameters: list[Parameter]) -> SetParametersResult:
         new_model: RobotModel | None = None
         new_xml = ''
-        updates: dict[str, Any] = {}
+        updates: dict[str, object] = {}
+        new_frequency: float | None = None
         for parameter in parameters:
             if parameter.name == 'robot_description':
                 new_xml = str(parameter.value or '')
@@ -362,12 +362,12 @@ class RobotStatePublisher(Node):
                         successful=False,
                         reason='publish_frequency must be between 0.0 (exclusive) and 1000.0',
                     )
-                updates['publish_frequency'] = float(parameter.value)
+                new_frequency = float(parameter.value)
             elif parameter.name in {'frame_prefix', 'ignore_timestamp'}:
                 updates[parameter.name] = parameter.value
         # Everything is valid: apply (upstream applies after the set, from parameter events).
-        if 'publish_frequency' in updates:
-            self._publish_frequency = updates['publish_frequency']
+        if new_frequency is not None:
+            self._publish_frequency = new_frequency
         if 'ignore_timestamp' in updates:
             self._ignore_timestamp = bool(updates['ignore_timestamp'])
         if 'frame_prefix' in updates:
@@ -380,7 +380,7 @@ class RobotStatePublisher(Node):
         return SetParametersResult(successful=True)
 
     # -- joint states --------------------------------------------------------------------
-    def _on_joint_state(self, message: Any) -> None:
+    def _on_joint_state(self, message: sensor_msgs.JointState) -> None:
         names = message.name
         positions = message.position
         problem = joint_state_problem(names, positions, message.velocity, message.effort)
@@ -432,7 +432,7 @@ class RobotStatePublisher(Node):
         self._tf_pub.publish(self._encoder.encode(transforms, sec, nanosec))
 
 
-def _copy_qos(profile: Any) -> Any:
+def _copy_qos(profile: QoSProfile) -> QoSProfile:
     """Return an independent copy of a QoS profile (presets must not be modified)."""
     return type(profile)(
         history=profile.history,
@@ -442,11 +442,13 @@ def _copy_qos(profile: Any) -> Any:
     )
 
 
-def _parameter(name: str, value: Any) -> Any:
+def _parameter(name: str, value: object) -> Parameter:
     return Parameter(name, value=value)
 
 
-def _transform_stamped(geometry_msgs: Any, stamp: Any, transform: JointTransform) -> Any:
+def _transform_stamped(
+    stamp: builtin_interfaces.Time, transform: JointTransform
+) -> geometry_msgs.TransformStamped:
     """Build a TransformStamped from ``(parent, child, translation, rotation)``."""
     parent, child, translation, rotation = transform
     message = geometry_msgs.TransformStamped()
@@ -465,7 +467,7 @@ def main(args: Sequence[str] | None = None) -> int:
     argv = list(sys.argv if args is None else args)  # argv[0] is the program
     file_arguments = non_ros_arguments(argv[1:])
 
-    def factory() -> Any:
+    def factory() -> RobotStatePublisher:
         return RobotStatePublisher(file_arguments)
 
     return int(run_node(factory, argv))

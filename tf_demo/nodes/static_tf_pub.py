@@ -29,7 +29,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 import sys
-from typing import Any
 
 from tf_demo.core.files import InputFileError
 from tf_demo.core.files import read_text_file
@@ -67,7 +66,11 @@ class StaticTransformSpec:
 
 
 def spec_from_values(
-    parent: Any, child: Any, translation: Any, rotation: Any, where: str = 'parameter'
+    parent: object,
+    child: object,
+    translation: object,
+    rotation: object,
+    where: str = 'parameter',
 ) -> StaticTransformSpec:
     """
     Validate raw values into a :class:`StaticTransformSpec`.

@@ -23,7 +23,7 @@ as the course's listener does, and keeps going.
 from __future__ import annotations
 
 import sys
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.core.exceptions import TransformException
 from tf_demo.msgs.convert import transform_stamped_args
@@ -36,10 +36,13 @@ from tf_demo.transport import run_node
 from tf_demo.transport.clock import Time
 from tf_demo.transport.node import Node
 
+if TYPE_CHECKING:
+    from tf_demo.msgs.convert import TransformStampedLike
+
 NODE_NAME = 'tf_listener'
 
 
-def format_translation(target: str, source: str, transform: Any) -> str:
+def format_translation(target: str, source: str, transform: TransformStampedLike) -> str:
     """Log line for a successful lookup: the pose of ``source`` in ``target``."""
     _, _, stamp_ns, (x, y, z), _ = transform_stamped_args(transform)
     return (

@@ -24,15 +24,23 @@ one ignores it, ros2/geometry2#705).
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 import copy
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.ros.transform_broadcaster import as_transform_list
+
+if TYPE_CHECKING:
+    from tf_demo.msgs.geometry_msgs import TransformStamped
+    from tf_demo.transport.node import Node
+    from tf_demo.transport.qos import QoSProfile
 
 DEFAULT_STATIC_TF_TOPIC = '/tf_static'
 
 
-def merge_static_transforms(current: dict[str, Any], new: list[Any]) -> dict[str, Any]:
+def merge_static_transforms(
+    current: dict[str, TransformStamped], new: list[TransformStamped]
+) -> dict[str, TransformStamped]:
     """
     Return the set after adding ``new``: same child frame replaces in place, others append.
 
@@ -49,7 +57,11 @@ class StaticTransformBroadcaster:
     """Publishes the accumulated static transforms on ``/tf_static`` (depth 1, latched)."""
 
     def __init__(
-        self, node: Any, qos: Any = None, *, topic: str = DEFAULT_STATIC_TF_TOPIC
+        self,
+        node: Node,
+        qos: QoSProfile | int | None = None,
+        *,
+        topic: str = DEFAULT_STATIC_TF_TOPIC,
     ) -> None:
         """
         Create the latched publisher.
@@ -67,14 +79,14 @@ class StaticTransformBroadcaster:
             qos = StaticBroadcasterQoS()
         self._message_type = tf2_msgs.TFMessage
         self.pub_tf = node.create_publisher(self._message_type, topic, qos)
-        self._by_child: dict[str, Any] = {}
+        self._by_child: dict[str, TransformStamped] = {}
 
     @property
-    def transforms(self) -> list[Any]:
+    def transforms(self) -> list[TransformStamped]:
         """The transforms that the next publication contains, in order."""
         return list(self._by_child.values())
 
-    def send_transform(self, transform: Any) -> None:
+    def send_transform(self, transform: TransformStamped | Iterable[TransformStamped]) -> None:
         """Add (or replace by child frame) the given transform(s) and republish the whole set."""
         new = [copy.deepcopy(t) for t in as_transform_list(transform)]
         self._by_child = merge_static_transforms(self._by_child, new)

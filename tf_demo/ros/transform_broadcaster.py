@@ -17,26 +17,34 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any
+from typing import cast
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from tf_demo.msgs.geometry_msgs import TransformStamped
+    from tf_demo.transport.node import Node
+    from tf_demo.transport.qos import QoSProfile
 
 DEFAULT_TF_TOPIC = '/tf'
 
 
-def as_transform_list(transform: Any) -> list[Any]:
+def as_transform_list(transform: object) -> list[TransformStamped]:
     """
     Return ``[transform]`` for one ``TransformStamped``, or the items of an iterable of them.
+
+    Either world's messages pass (checked by their fields, as tf2_ros checks them).
 
     :raises TypeError: for anything that is neither.
     """
     if hasattr(transform, 'child_frame_id') and hasattr(transform, 'transform'):
-        return [transform]
+        return [cast('TransformStamped', transform)]
     if isinstance(transform, Iterable) and not isinstance(transform, (str, bytes)):
         items = list(transform)
         for item in items:
             if not hasattr(item, 'child_frame_id'):
                 msg = f'expected TransformStamped messages, got {type(item).__name__}'
                 raise TypeError(msg)
-        return items
+        return cast('list[TransformStamped]', items)
     msg = f'expected a TransformStamped or a list of them, got {type(transform).__name__}'
     raise TypeError(msg)
 
@@ -44,7 +52,9 @@ def as_transform_list(transform: Any) -> list[Any]:
 class TransformBroadcaster:
     """Publishes ``TransformStamped`` messages on ``/tf`` (KEEP_LAST 100, RELIABLE, VOLATILE)."""
 
-    def __init__(self, node: Any, qos: Any = None, *, topic: str = DEFAULT_TF_TOPIC) -> None:
+    def __init__(
+        self, node: Node, qos: QoSProfile | int | None = None, *, topic: str = DEFAULT_TF_TOPIC
+    ) -> None:
         """
         Create the publisher.
 
@@ -61,7 +71,7 @@ class TransformBroadcaster:
         self._message_type = tf2_msgs.TFMessage
         self.pub_tf = node.create_publisher(self._message_type, topic, qos)
 
-    def send_transform(self, transform: Any) -> None:
+    def send_transform(self, transform: TransformStamped | Iterable[TransformStamped]) -> None:
         """Publish one ``TFMessage`` with the given transform or transforms."""
         self.pub_tf.publish(self._message_type(transforms=as_transform_list(transform)))
 
