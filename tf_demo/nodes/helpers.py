@@ -85,13 +85,22 @@ def require_distinct_frames(parent_frame: str, child_frame: str) -> None:
 
 def as_float(name: str, value: object) -> float:
     """Return ``value`` as a finite float, or raise a one-line error naming ``name``."""
+    return _finite_number(
+        value,
+        lambda: f'parameter {name!r} must be a number, got {_show(value)}',
+        lambda: f'parameter {name!r} must be finite, got {_show(value)}',
+    )
+
+
+def _finite_number(
+    value: object, not_a_number: Callable[[], str], not_finite: Callable[[], str]
+) -> float:
+    """Return ``value`` as a finite float; else raise with the text the matching callable makes."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        msg = f'parameter {name!r} must be a number, got {_show(value)}'
-        raise NodeConfigError(msg)
+        raise NodeConfigError(not_a_number())
     number = _finite_float(value)
     if number is None:
-        msg = f'parameter {name!r} must be finite, got {_show(value)}'
-        raise NodeConfigError(msg)
+        raise NodeConfigError(not_finite())
     return number
 
 
@@ -194,17 +203,15 @@ def _number_list(name: str, value: object) -> list[float]:
     if isinstance(value, (str, bytes)) or not isinstance(value, Sequence):
         msg = f'{name} must be a list of numbers, got {_show(value)}'
         raise NodeConfigError(msg)
-    numbers = []
-    for item in value:
-        if isinstance(item, bool) or not isinstance(item, (int, float)):
-            msg = f'{name} must be a list of numbers, got {_show(value)}'
-            raise NodeConfigError(msg)
-        number = _finite_float(item)
-        if number is None:
-            msg = f'{name} must contain finite numbers, got {_show(value)}'
-            raise NodeConfigError(msg)
-        numbers.append(number)
-    return numbers
+    items = value
+    return [
+        _finite_number(
+            item,
+            lambda: f'{name} must be a list of numbers, got {_show(items)}',
+            lambda: f'{name} must contain finite numbers, got {_show(items)}',
+        )
+        for item in items
+    ]
 
 
 MAX_SHOWN_CHARS = 200
