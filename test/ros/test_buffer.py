@@ -12,19 +12,18 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Buffer: tf2_ros's API over the real core, event-driven waits on real (sim) clocks."""
+"""Buffer: tf2_ros's API over the real core (its waits: test_buffer_waits.py)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 import copy
-import threading
 from typing import Any
+from typing import cast
 
 import pytest
 from tf_demo.core.exceptions import ExtrapolationException
 from tf_demo.core.exceptions import ForwardExtrapolationException
-from tf_demo.core.exceptions import LookupException
-from tf_demo.core.exceptions import TimeoutException
 from tf_demo.ros import Buffer
 from tf_demo.ros import TypeException
 from tf_demo.transport.clock import Duration
@@ -34,7 +33,6 @@ from tf_demo.transport.messages import builtin_interfaces
 from tf_demo.transport.messages import geometry_msgs
 
 S = 1_000_000_000
-HANG_GUARD_S = 10.0
 
 
 def transform_msg(
@@ -59,21 +57,6 @@ def sim_clock(start_s: float) -> ROSClock:
     clock._set_ros_time_is_active(True)
     clock.set_ros_time_override(Time(seconds=start_s))
     return clock
-
-
-def in_thread(target: object) -> tuple[threading.Thread, dict[str, object]]:
-    """Run ``target()`` in a thread; its result or exception lands in the returned dict."""
-    box: dict[str, object] = {}
-
-    def run() -> None:
-        try:
-            box['result'] = target()  # type: ignore[operator]
-        except Exception as error:
-            box['error'] = error
-
-    thread = threading.Thread(target=run, daemon=True)
-    thread.start()
-    return thread, box
 
 
 def test_lookup_returns_the_worlds_transform_stamped() -> None:
@@ -101,10 +84,11 @@ def test_time_arguments_accept_time_message_and_int_ns() -> None:
 def test_bad_time_type_raises_tf2_py_type_error() -> None:
     """Anything without nanoseconds or sec/nanosec is refused with tf2_py's text."""
     buffer = Buffer()
+    # Wrong on purpose (the casts only tell the type checker so): the run-time checks answer.
     with pytest.raises(TypeError, match=r'time must have sec and nanosec, or nanoseconds\.'):
-        buffer.lookup_transform('a', 'b', 1.5)
+        buffer.lookup_transform('a', 'b', cast('int', 1.5))
     with pytest.raises(TypeError, match=r'duration must have sec and nanosec, or nanoseconds\.'):
-        buffer.can_transform('a', 'b', 0, 'soon')
+        buffer.can_transform('a', 'b', 0, cast('int', 'soon'))
 
 
 def test_can_transform_debug_tuple_and_core_names() -> None:
@@ -123,10 +107,13 @@ def test_can_transform_debug_tuple_and_core_names() -> None:
 def test_set_transform_returns_none_and_static_survives_clear() -> None:
     """set_transform* return None (tf2_ros); NaN is not stored; clear() keeps statics."""
     buffer = Buffer()
-    assert buffer.set_transform(transform_msg('a', 'b', S, (float('nan'), 0.0, 0.0)), 'x') is None
+    # Typed '-> None'; called through 'object' callables to check what they return at run time.
+    set_transform: Callable[..., object] = buffer.set_transform
+    set_transform_static: Callable[..., object] = buffer.set_transform_static
+    assert set_transform(transform_msg('a', 'b', S, (float('nan'), 0.0, 0.0)), 'x') is None
     assert not buffer.can_transform('a', 'b', S)
-    assert buffer.set_transform_static(transform_msg('a', 's', 0, (0.0, 1.0, 0.0)), 'x') is None
-    assert buffer.set_transform(transform_msg('a', 'd', S), 'x') is None
+    assert set_transform_static(transform_msg('a', 's', 0, (0.0, 1.0, 0.0)), 'x') is None
+    assert set_transform(transform_msg('a', 'd', S), 'x') is None
     assert buffer.can_transform('a', 'd', S)
     buffer.clear()
     assert buffer.lookup_transform('a', 's', 0).transform.translation.y == 1.0
@@ -141,122 +128,6 @@ def test_lookup_full_and_latest_common_time() -> None:
     out = buffer.lookup_transform_full('base', 2 * S, 'base', 1 * S, 'odom')
     assert out.transform.translation.x == pytest.approx(-2.0)
     assert buffer.get_latest_common_time('odom', 'base').nanoseconds == 2 * S
-
-
-def test_blocking_wait_is_resolved_by_data_inserted_after_it_started() -> None:
-    """A wait with a long timeout returns True once another thread inserts the transform."""
-    buffer = Buffer()
-    started = threading.Event()
-
-    def wait() -> object:
-        started.set()
-        return buffer.can_transform('a', 'b', 0, Duration(seconds=HANG_GUARD_S * 3))
-
-    thread, box = in_thread(wait)
-    assert started.wait(HANG_GUARD_S)
-    assert not buffer.can_transform('a', 'b', 0)
-    buffer.set_transform(transform_msg('a', 'b', S), 'x')
-    thread.join(HANG_GUARD_S)
-    assert box == {'result': True}
-
-
-def test_blocking_timeout_is_measured_on_the_sim_clock() -> None:
-    """With a paused sim clock the wait keeps waiting; once /clock passes the timeout it fails."""
-    clock = sim_clock(100.0)
-    buffer = Buffer(clock=clock)
-    thread, box = in_thread(lambda: buffer.lookup_transform('a', 'b', 0, Duration(seconds=2)))
-    clock.set_ros_time_override(Time(seconds=101.0))
-    thread.join(0.3)
-    assert thread.is_alive(), 'the wait ended before 2 s of sim time passed'
-    clock.set_ros_time_override(Time(seconds=102.5))
-    thread.join(HANG_GUARD_S)
-    assert not thread.is_alive()
-    assert isinstance(box.get('error'), LookupException)
-
-
-def test_wait_in_the_only_feeder_thread_returns_at_once() -> None:
-    """A thread that delivers /tf itself cannot receive data while it waits: no deadlock."""
-    clock = sim_clock(5.0)
-    buffer = Buffer(clock=clock)
-
-    def feeder_waits() -> object:
-        buffer.note_feeder_thread()
-        return buffer.can_transform('a', 'b', 0, Duration(seconds=1000))
-
-    thread, box = in_thread(feeder_waits)
-    thread.join(HANG_GUARD_S)
-    assert box == {'result': False}
-
-
-def test_dedicated_thread_makes_the_feeder_wait_block_again() -> None:
-    """With set_using_dedicated_thread(True) the same wait blocks until data arrives."""
-    buffer = Buffer()
-    buffer.set_using_dedicated_thread(True)
-    started = threading.Event()
-
-    def feeder_waits() -> object:
-        buffer.note_feeder_thread()
-        started.set()
-        return buffer.can_transform('a', 'b', 0, Duration(seconds=HANG_GUARD_S * 3))
-
-    thread, box = in_thread(feeder_waits)
-    assert started.wait(HANG_GUARD_S)
-    buffer.set_transform(transform_msg('a', 'b', S), 'x')
-    thread.join(HANG_GUARD_S)
-    assert box == {'result': True}
-
-
-def test_async_wait_resolves_to_the_transform_when_data_arrives() -> None:
-    """wait_for_transform_async's future resolves to the TransformStamped after an insert."""
-    buffer = Buffer()
-    future = buffer.wait_for_transform_async('a', 'b', 0)
-    assert not future.done()
-    buffer.set_transform(transform_msg('a', 'b', S, (4.0, 0.0, 0.0)), 'x')
-    assert future.done()
-    assert future.result().transform.translation.x == 4.0
-
-
-def test_async_lookup_coroutine_driven_by_hand() -> None:
-    """lookup_transform_async (upstream's test pattern): send(None), insert, StopIteration."""
-    buffer = Buffer()
-    coro = buffer.lookup_transform_async('a', 'b', Time(seconds=3))
-    coro.send(None)
-    buffer.set_transform(transform_msg('a', 'b', 3 * S, (0.0, 5.0, 0.0)), 'x')
-    with pytest.raises(StopIteration) as stop:
-        coro.send(None)
-    assert stop.value.value.transform.translation.y == 5.0
-
-
-def test_async_timeout_raises_timeout_exception_on_sim_time() -> None:
-    """An awaitable wait with a timeout fails with TimeoutException once sim time passes it."""
-    clock = sim_clock(50.0)
-    buffer = Buffer(clock=clock)
-    future = buffer.wait_for_transform_async('a', 'b', 0, timeout=Duration(seconds=1))
-    clock.set_ros_time_override(Time(seconds=50.5))
-    assert not future.wait(0.3)
-    clock.set_ros_time_override(Time(seconds=51.5))
-    assert future.wait(HANG_GUARD_S)
-    assert isinstance(future.exception(), TimeoutException)
-    with pytest.raises(TimeoutException, match=r'from \[b\] to \[a\]'):
-        future.result()
-
-
-def test_async_wall_clock_timeout() -> None:
-    """Without a node the system clock measures the async timeout."""
-    buffer = Buffer()
-    future = buffer.wait_for_transform_async('a', 'b', 0, timeout=Duration(seconds=0.2))
-    assert future.wait(HANG_GUARD_S)
-    assert isinstance(future.exception(), TimeoutException)
-
-
-def test_async_full_wait_resolves() -> None:
-    """wait_for_transform_full_async resolves once both times are available."""
-    buffer = Buffer()
-    buffer.set_transform(transform_msg('odom', 'base', 1 * S, (1.0, 0.0, 0.0)), 'x')
-    future = buffer.wait_for_transform_full_async('base', 2 * S, 'base', 1 * S, 'odom')
-    assert not future.done()
-    buffer.set_transform(transform_msg('odom', 'base', 2 * S, (3.0, 0.0, 0.0)), 'x')
-    assert future.result().transform.translation.x == pytest.approx(-2.0)
 
 
 def test_backward_time_jump_clears_dynamic_keeps_static() -> None:
@@ -346,20 +217,44 @@ def test_extrapolation_subclasses_are_exposed() -> None:
         buffer.lookup_transform('a', 'b', 1 * S)
 
 
-def test_thread_pool_workers_keep_blocking_waits() -> None:
-    """In a MultiThreadedExecutor worker another worker may deliver: the wait blocks for data."""
-    from concurrent.futures import ThreadPoolExecutor
+class _Unreadable(float):
+    """A float whose value cannot be read: the core refuses it with a TypeError."""
 
+    def __float__(self) -> float:
+        raise ValueError('unreadable')
+
+
+def test_insert_decoded_is_the_listeners_fast_path() -> None:
+    """Decoded tuples go into the core; a transform whose insert raises is returned, not fatal."""
     buffer = Buffer()
-    started = threading.Event()
+    failures = buffer.insert_decoded(
+        [
+            ('a', 'b', S, (1.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
+            ('a', 'bad', S, (_Unreadable(1.0), 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
+            ('a', 'nan', S, (float('nan'), 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
+            ('b', 'c', S, (0.0, 2.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
+        ],
+        'default_authority',
+        bytes(16),
+        False,
+    )
+    assert [(parent, child, type(error)) for parent, child, error in failures] == [
+        ('a', 'bad', TypeError)
+    ]
+    assert buffer.lookup_transform('a', 'c', S).transform.translation.y == 2.0
+    assert not buffer.can_transform('a', 'nan', S)
+    assert 'default_authority' in buffer.all_frames_as_yaml()
 
-    def worker_waits() -> bool:
-        buffer.note_feeder_thread()
-        started.set()
-        return bool(buffer.can_transform('a', 'b', 0, Duration(seconds=HANG_GUARD_S * 3)))
 
-    with ThreadPoolExecutor(max_workers=1) as pool:
-        future = pool.submit(worker_waits)
-        assert started.wait(HANG_GUARD_S)
-        buffer.set_transform(transform_msg('a', 'b', S), 'x')
-        assert future.result(timeout=HANG_GUARD_S) is True
+def test_the_core_and_tf2_py_names() -> None:
+    """Buffer holds its BufferCore (tf_demo's extensions); tf2_py's names answer as upstream."""
+    buffer = Buffer()
+    buffer.set_transform(transform_msg('odom', 'base', 1 * S, (1.0, 0.0, 0.0)), 'x')
+    buffer.set_transform(transform_msg('odom', 'base', 2 * S, (3.0, 0.0, 0.0)), 'x')
+    assert buffer.core.frame_ids() == buffer._getFrameStrings() == ['base', 'odom']
+    assert buffer.frame_ids() == ['base', 'odom']
+    assert buffer._frameExists('odom')
+    assert 'odom' in buffer._allFramesAsDot()
+    linear, angular = buffer.lookupVelocityCore('base', 'odom', Time(seconds=1.5), S // 2)
+    assert (linear, angular) == buffer.core.lookup_velocity('base', 'odom', 3 * S // 2, S // 2)
+    assert linear[0] == pytest.approx(2.0)

@@ -13,9 +13,14 @@
 # limitations under the License.
 
 """
-``Buffer``: tf2_ros's Python buffer on top of :class:`tf_demo.core.BufferCore`.
+``Buffer``: tf2_ros's Python buffer around a :class:`tf_demo.core.BufferCore`.
 
-Same methods, signatures and results as ``tf2_ros.Buffer`` (Jazzy), with these improvements:
+Same methods, signatures and results as ``tf2_ros.Buffer`` (Jazzy), including the ``tf2_py``
+core names it inherits upstream (``lookup_transform_core``, ``can_transform_core``...).
+Upstream's ``Buffer`` *is* a ``BufferCore`` whose methods it redefines with other signatures;
+this one *holds* its core (:attr:`Buffer.core`, where tf_demo's extensions such as
+``lookup_transforms`` or ``frames_info`` live), so both keep their own signatures. The waiting is
+:class:`~tf_demo.ros.buffer_waits.BufferWaits`'s. With these improvements:
 
 **Event-driven waits.** ``can_transform``/``lookup_transform`` with a timeout block on a
 :class:`threading.Condition` that the core's insert callback and the clock's jump callback
@@ -60,9 +65,12 @@ world's own ``geometry_msgs/TransformStamped``.
 from __future__ import annotations
 
 from collections.abc import Callable
+from collections.abc import Iterable
 import logging
 import threading
-from typing import Any
+from typing import NamedTuple
+from typing import Protocol
+from typing import TYPE_CHECKING
 from typing import TypeVar
 
 from tf_demo.core.buffer_core import BufferCore
@@ -72,37 +80,63 @@ from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.msgs.log_throttle import PerWriterThrottle
 from tf_demo.msgs.log_throttle import Writer
+from tf_demo.ros.buffer_waits import BufferWaits
 from tf_demo.ros.geometry import ros_type_name
 from tf_demo.ros.geometry import TRANSFORM_FUNCTIONS
 from tf_demo.ros.geometry import TransformFunction
+from tf_demo.transport.clock import Clock
+from tf_demo.transport.clock import Duration
+from tf_demo.transport.clock import JumpThreshold
+from tf_demo.transport.clock import Time
 from tf_demo.transport.future import Future
+from tf_demo.transport.logging import get_logger
+from tf_demo.transport.messages import geometry_msgs
+from tf_demo.transport.messages import service_module
+
+if TYPE_CHECKING:
+    from tf_demo.core.buffer_core import TransformResult
+    from tf_demo.core.math3d import Vec3
+    from tf_demo.msgs.cdr import TransformTuple
+    from tf_demo.msgs.convert import HeaderLike
+    from tf_demo.msgs.convert import StampLike
+    from tf_demo.msgs.convert import TransformStampedLike
+    from tf_demo.msgs.geometry_msgs import TransformStamped
+    from tf_demo.msgs.tf2_msgs import FrameGraph
+    from tf_demo.msgs.tf2_msgs import FrameGraph_Response
+    from tf_demo.transport.clock import JumpHandle
+    from tf_demo.transport.clock import TimeJump
+    from tf_demo.transport.logging import Logger
+    from tf_demo.transport.node import Node
+
+    #: A time: rclpy-style ``Time``, a ``builtin_interfaces/Time`` message (either world's:
+    #: ``sec`` and ``nanosec``) or int nanoseconds.
+    TimeLike = Time | StampLike | int
+    #: A duration: ``Duration``, a ``builtin_interfaces/Duration`` message or int nanoseconds.
+    DurationLike = Duration | StampLike | int
 
 DEFAULT_CACHE_TIME_NS = 10_000_000_000
 JUMP_BACK_CLEAR_THRESHOLD_NS = 1_000_000_000
 """A backward jump of at least this much clears the buffer (tf2_ros Python's threshold)."""
-POOL_THREAD_PREFIX = 'ThreadPoolExecutor'
-"""Name prefix of ``concurrent.futures`` worker threads (rclpy's MultiThreadedExecutor)."""
-MAX_WAIT_SLICE_S = 1.0
-"""Longest single condition wait; bounds how late a deadline on a silent clock is noticed."""
 
 DIRECT_WRITER = 'direct set_transform calls'
 """Who :meth:`Buffer.set_log_source` names when no listener said who sent a transform."""
 
-DEDICATED_THREAD_WARNING = (
-    'Do not call canTransform or lookupTransform with a timeout unless you are using another '
-    'thread for populating data. Without a dedicated thread it will always timeout.  If you '
-    'have a separate thread servicing tf messages, call setUsingDedicatedThread(true) on your '
-    'Buffer instance.'
-)
 
-T = TypeVar('T')
+class Stamped(Protocol):
+    """A stamped geometry message (``header.frame_id``, ``header.stamp``) of either world."""
+
+    @property
+    def header(self) -> HeaderLike: ...
+
+
+StampedT = TypeVar('StampedT', bound=Stamped)
 
 
 class TypeException(Exception):  # noqa: N818 - tf2_ros's name
     """``Buffer.transform`` got a message type it cannot transform (tf2_ros's name)."""
 
 
-def ns_from_time(time: Any) -> int:
+def ns_from_time(time: TimeLike) -> int:
     """
     Integer nanoseconds of a time given as ``Time``, a Time message or ``int`` ns.
 
@@ -111,7 +145,7 @@ def ns_from_time(time: Any) -> int:
     return _ns_from(time, 'time')
 
 
-def ns_from_duration(duration: Any) -> int:
+def ns_from_duration(duration: DurationLike | None) -> int:
     """
     Integer nanoseconds of a duration given as ``Duration``, a Duration message or ``int`` ns.
 
@@ -124,58 +158,46 @@ def ns_from_duration(duration: Any) -> int:
     return _ns_from(duration, 'duration')
 
 
-def _ns_from(value: Any, what: str) -> int:
+def _ns_from(value: object, what: str) -> int:
+    """Nanoseconds of ``value`` (checked at run time: callers of an untyped API pass anything)."""
     if isinstance(value, int) and not isinstance(value, bool):
         return value
     nanoseconds = getattr(value, 'nanoseconds', None)
     if isinstance(nanoseconds, int):
         return nanoseconds
-    if hasattr(value, 'sec') and hasattr(value, 'nanosec'):
-        return int(value.sec) * 1_000_000_000 + int(value.nanosec)
+    sec = getattr(value, 'sec', None)
+    nanosec = getattr(value, 'nanosec', None)
+    if sec is not None and nanosec is not None:
+        return int(sec) * 1_000_000_000 + int(nanosec)
     msg = f'{what} must have sec and nanosec, or nanoseconds.'
     raise TypeError(msg)
 
 
-def _default_clock() -> Any:
-    from tf_demo.transport.clock import Clock
+class _Query(NamedTuple):
+    """One question to the buffer: its ``(possible, error text)`` now, and its lookup."""
 
-    return Clock()
+    answer: Callable[[], tuple[bool, str]]
+    lookup: Callable[[], TransformStamped]
 
-
-def _buffer_logger() -> Any:
-    from tf_demo.transport.logging import get_logger
-
-    return get_logger('tf2_buffer')
-
-
-class _AsyncWait:
-    """One pending asynchronous wait: its readiness check, its lookup and its deadline."""
-
-    __slots__ = ('deadline_ns', 'future', 'lookup', 'ready', 'timeout_text')
-
-    def __init__(
-        self,
-        ready: Callable[[], bool],
-        lookup: Callable[[], Any],
-        deadline_ns: int | None,
-        future: Future[Any],
-        timeout_text: str,
-    ) -> None:
-        self.timeout_text = timeout_text
-        self.ready = ready
-        self.lookup = lookup
-        self.deadline_ns = deadline_ns
-        self.future = future
+    def ready(self) -> bool:
+        """Whether the lookup would succeed now."""
+        return self.answer()[0]
 
 
-class Buffer(BufferCore):
+class Buffer:
     """
-    tf2_ros-compatible transform buffer: the core plus waits, async API and ``transform()``.
+    tf2_ros-compatible transform buffer: a core plus waits, async API and ``transform()``.
 
     See the module docstring for how waiting works and how it avoids executor deadlocks.
     """
 
-    def __init__(self, cache_time: Any = None, node: Any = None, *, clock: Any = None) -> None:
+    def __init__(
+        self,
+        cache_time: DurationLike | None = None,
+        node: Node | None = None,
+        *,
+        clock: Clock | None = None,
+    ) -> None:
         """
         Create a buffer.
 
@@ -192,30 +214,27 @@ class Buffer(BufferCore):
         )
         self._rejections = PerWriterThrottle('rejected transforms')
         self._log_source = threading.local()
-        super().__init__(cache_time_ns, log=self._log_core)
+        self.core = BufferCore(cache_time_ns, log=self._log_core)
+        """The tf2 core this buffer wraps (tf_demo's extensions of tf2's core API live there)."""
         self._node = node
-        self._condition = threading.Condition()
-        self._blocked_waits = 0
-        """Threads inside :meth:`_wait_until`'s condition wait (changed under ``_condition``)."""
-        self._async_waits: list[_AsyncWait] = []
-        self._watcher: threading.Thread | None = None
-        self._dedicated_thread = False
-        self._feeder_threads: set[int] = set()
-        self._warned_no_dedicated_thread = False
         self._extra_transforms: dict[str, TransformFunction] = {}
         if clock is None:
-            clock = node.get_clock() if node is not None else _default_clock()
-        self.clock: Any = clock
-        self.add_insert_callback(self._on_new_data)
-        self._jump_handle = self._register_jump_callback()
+            clock = node.get_clock() if node is not None else Clock()
+        self.clock: Clock = clock
+        self._waits: BufferWaits[TransformStamped] = BufferWaits(
+            self._now_ns, lambda text: self._logger().warning(text)
+        )
+        self.core.add_insert_callback(self._waits.on_new_data)
+        self.jump_handle = self._register_jump_callback()
         self.srv = _create_frames_service(node, self) if node is not None else None
 
     # ----------------------------------------------------------------------------- plumbing
 
-    def _logger(self) -> Any:
+    def _logger(self) -> Logger:
         if self._node is not None:
-            return self._node.get_logger()
-        return _buffer_logger()
+            node_logger: Logger = self._node.get_logger()
+            return node_logger
+        return get_logger('tf2_buffer')
 
     def set_log_source(self, writer: Writer | None) -> None:
         """
@@ -251,172 +270,163 @@ class Buffer(BufferCore):
         except Exception:
             logging.getLogger('tf_demo.ros').log(level, text)
 
-    def _register_jump_callback(self) -> Any:
+    def _register_jump_callback(self) -> JumpHandle | None:
         """Watch the clock: clear on backward jumps, and wake deadline checks on every tick."""
         create = getattr(self.clock, 'create_jump_callback', None)
         if create is None:
             return None
-        from tf_demo.transport.clock import Duration
-        from tf_demo.transport.clock import JumpThreshold
-
         threshold = JumpThreshold(
             min_forward=Duration(nanoseconds=1),
             min_backward=Duration(nanoseconds=-1),
             on_clock_change=True,
         )
         try:
-            return create(threshold, post_callback=self._on_time_jump)
+            handle: JumpHandle = create(threshold, post_callback=self.time_jump_callback)
         except Exception as error:
             logging.getLogger('tf_demo.ros').debug('no clock jump callbacks: %s', error)
             return None
+        return handle
 
-    def _on_time_jump(self, time_jump: Any) -> None:
-        change = getattr(getattr(time_jump, 'clock_change', None), 'name', '')
-        delta_ns = getattr(getattr(time_jump, 'delta', None), 'nanoseconds', 0)
+    def time_jump_callback(self, time_jump: TimeJump) -> None:
+        """
+        React to a jump of the buffer's clock (tf2_ros's name).
+
+        A backward jump of 1 s or more, or ROS time being (de)activated, clears the buffer with
+        upstream's warning; every jump wakes the waits, whose deadlines are on this clock.
+        """
+        change = time_jump.clock_change.name
         if change in ('ROS_TIME_ACTIVATED', 'ROS_TIME_DEACTIVATED') or (
-            delta_ns <= -JUMP_BACK_CLEAR_THRESHOLD_NS
+            time_jump.delta.nanoseconds <= -JUMP_BACK_CLEAR_THRESHOLD_NS
         ):
             self._logger().warning('Detected jump back in time. Clearing tf buffer.')
             self.clear()
-        self._wake()
+        self._waits.wake()
 
     def _now_ns(self) -> int:
         return int(self.clock.now().nanoseconds)
 
-    def _wake(self) -> None:
-        with self._condition:
-            self._condition.notify_all()
-
-    def _on_new_data(self) -> None:
-        """Core insert callback: wake blocking waits (if any) and resolve asynchronous ones."""
-        # A waiter registers under the lock before it checks its condition, so one that
-        # registers after this read sees the inserted data itself: no wake-up is lost.
-        if self._blocked_waits:
-            self._wake()
-        if self._async_waits:
-            self._service_async_waits(now_ns=None)
-
     def note_feeder_thread(self) -> None:
         """Record that the calling thread delivers transforms (called by the listener)."""
-        ident = threading.get_ident()
-        if ident not in self._feeder_threads:
-            with self._condition:
-                self._feeder_threads.add(ident)
+        self._waits.note_feeder_thread()
 
     def set_using_dedicated_thread(self, value: bool) -> None:
         """Declare that a thread other than the callers' fills this buffer (C++'s name)."""
-        self._dedicated_thread = value
+        self._waits.set_using_dedicated_thread(value)
 
     setUsingDedicatedThread = set_using_dedicated_thread  # noqa: N815 - tf2 C++ spelling
 
-    def _data_can_arrive_while_waiting(self) -> bool:
-        if self._dedicated_thread:
-            return True
-        current = threading.current_thread()
-        if current.name.startswith(POOL_THREAD_PREFIX):
-            return True  # a multi-threaded executor: another worker can deliver meanwhile
-        with self._condition:
-            feeders = set(self._feeder_threads)
-        return feeders != {current.ident}
-
-    def _wait_until(self, ready: Callable[[], bool], timeout_ns: int) -> None:
-        """Block until ``ready()`` or until ``timeout_ns`` passed on the buffer's clock."""
-        if timeout_ns <= 0 or ready():
-            return
-        if not self._data_can_arrive_while_waiting():
-            if not self._warned_no_dedicated_thread:
-                self._warned_no_dedicated_thread = True
-                self._logger().warning(DEDICATED_THREAD_WARNING)
-            return
-        deadline_ns = self._now_ns() + timeout_ns
-        with self._condition:
-            self._blocked_waits += 1
-            try:
-                while not ready():
-                    remaining_ns = deadline_ns - self._now_ns()
-                    if remaining_ns <= 0:
-                        return
-                    self._condition.wait(min(remaining_ns / 1e9, MAX_WAIT_SLICE_S))
-            finally:
-                self._blocked_waits -= 1
-
     # ---------------------------------------------------------------------- message in/out
 
-    def set_transform(self, transform: Any, authority: str) -> None:  # type: ignore[override]
+    def set_transform(self, transform: TransformStampedLike, authority: str) -> None:
         """Insert a dynamic ``TransformStamped``; a rejected one is logged, as tf2_ros does."""
-        self._insert(transform, authority, is_static=False)
+        self.core.set_transform(*transform_stamped_args(transform), authority, False)
 
-    def set_transform_static(self, transform: Any, authority: str) -> None:
+    def set_transform_static(self, transform: TransformStampedLike, authority: str) -> None:
         """Insert a static ``TransformStamped`` (valid at all times); rejections are logged."""
-        self._insert(transform, authority, is_static=True)
+        self.core.set_transform(*transform_stamped_args(transform), authority, True)
 
-    def _insert(self, transform: Any, authority: str, *, is_static: bool) -> None:
-        parent, child, stamp_ns, translation, rotation = transform_stamped_args(transform)
-        BufferCore.set_transform(
-            self, parent, child, stamp_ns, translation, rotation, authority, is_static
-        )
+    def insert_decoded(
+        self, transforms: Iterable[TransformTuple], authority: str, writer: Writer, is_static: bool
+    ) -> list[tuple[str, str, Exception]]:
+        """
+        Insert transforms decoded straight from serialised ``/tf`` bytes: the listener's fast path.
+
+        :class:`~tf_demo.ros.TransformListener` decodes each ``TFMessage`` with
+        :func:`tf_demo.msgs.cdr.decode_tf_message_transforms` and hands the tuples
+        ``(parent, child, stamp_ns, translation, rotation)`` here; they go into
+        :meth:`BufferCore.set_transform <tf_demo.core.BufferCore.set_transform>` with no message
+        object built. Rejected transforms are logged as tf2 logs them, throttled per ``writer``.
+
+        :returns: ``(parent, child, error)`` for each transform whose insert raised (the others
+            are inserted all the same).
+        """
+        insert = self.core.set_transform
+        failures: list[tuple[str, str, Exception]] = []
+        self._log_source.writer = writer
+        try:
+            for parent, child, stamp_ns, translation, rotation in transforms:
+                try:
+                    insert(parent, child, stamp_ns, translation, rotation, authority, is_static)
+                except Exception as error:
+                    failures.append((parent, child, error))
+        finally:
+            self._log_source.writer = None
+        return failures
 
     @staticmethod
-    def _message(target_frame: str, source_frame: str, result: Any) -> Any:
-        from tf_demo.transport.messages import geometry_msgs
-
-        msg = geometry_msgs.TransformStamped()
-        fill_transform_stamped(
+    def _message(
+        target_frame: str, source_frame: str, result: TransformResult
+    ) -> TransformStamped:
+        msg: TransformStamped = geometry_msgs.TransformStamped()
+        return fill_transform_stamped(
             msg, target_frame, source_frame, result.stamp_ns, result.translation, result.rotation
         )
-        return msg
 
-    # -------------------------------------------------------------------------- core names
+    # ---------------------------------------------------------------- tf2_py's core names
 
-    def lookup_transform_core(self, target_frame: str, source_frame: str, time: Any) -> Any:
+    def lookup_transform_core(
+        self, target_frame: str, source_frame: str, time: TimeLike
+    ) -> TransformStamped:
         """Look up target_T_source now, without waiting; raises tf2's exceptions."""
-        result = BufferCore.lookup_transform(self, target_frame, source_frame, ns_from_time(time))
+        result = self.core.lookup_transform(target_frame, source_frame, ns_from_time(time))
         return self._message(target_frame, source_frame, result)
 
     def lookup_transform_full_core(
         self,
         target_frame: str,
-        target_time: Any,
+        target_time: TimeLike,
         source_frame: str,
-        source_time: Any,
+        source_time: TimeLike,
         fixed_frame: str,
-    ) -> Any:
+    ) -> TransformStamped:
         """Look up with the advanced (time-travel) API now, without waiting."""
-        result = BufferCore.lookup_transform_full(
-            self, *_full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
-        )
-        return self._message(target_frame, source_frame, result)
+        query = _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
+        return self._message(target_frame, source_frame, self.core.lookup_transform_full(*query))
 
     def can_transform_core(
-        self, target_frame: str, source_frame: str, time: Any
+        self, target_frame: str, source_frame: str, time: TimeLike
     ) -> tuple[bool, str]:
         """Return ``(possible, error_text)`` now, without waiting."""
-        answer = BufferCore.can_transform(
-            self, target_frame, source_frame, ns_from_time(time), return_debug_tuple=True
+        return self.core.can_transform(
+            target_frame, source_frame, ns_from_time(time), return_debug_tuple=True
         )
-        return _debug_tuple(answer)
 
     def can_transform_full_core(
         self,
         target_frame: str,
-        target_time: Any,
+        target_time: TimeLike,
         source_frame: str,
-        source_time: Any,
+        source_time: TimeLike,
         fixed_frame: str,
     ) -> tuple[bool, str]:
         """Return ``(possible, error_text)`` for the advanced API now, without waiting."""
-        answer = BufferCore.can_transform_full(
-            self,
-            *_full_query(target_frame, target_time, source_frame, source_time, fixed_frame),
-            return_debug_tuple=True,
+        query = _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
+        return self.core.can_transform_full(*query, return_debug_tuple=True)
+
+    def lookupVelocityCore(  # noqa: N802 - tf2_py name
+        self,
+        tracking_frame: str,
+        observation_frame: str,
+        time: TimeLike,
+        averaging_interval: DurationLike,
+    ) -> tuple[Vec3, Vec3]:
+        """Return the twist ``((vx, vy, vz), (wx, wy, wz))`` of a frame (tf2's velocity)."""
+        return self.core.lookup_velocity(
+            tracking_frame,
+            observation_frame,
+            ns_from_time(time),
+            ns_from_duration(averaging_interval),
         )
-        return _debug_tuple(answer)
 
     # ------------------------------------------------------------------------ blocking API
 
     def lookup_transform(
-        self, target_frame: str, source_frame: str, time: Any, timeout: Any = None
-    ) -> Any:
+        self,
+        target_frame: str,
+        source_frame: str,
+        time: TimeLike,
+        timeout: DurationLike | None = None,
+    ) -> TransformStamped:
         """
         Get the transform from the source frame to the target frame.
 
@@ -427,39 +437,36 @@ class Buffer(BufferCore):
         :return: target_T_source as a ``TransformStamped``.
         :raises TransformException: the core's specific error when it is (still) unavailable.
         """
-        time_ns = ns_from_time(time)
-        self._wait_until(
-            lambda: self.can_transform_core(target_frame, source_frame, time_ns)[0],
-            ns_from_duration(timeout),
-        )
-        return self.lookup_transform_core(target_frame, source_frame, time_ns)
+        query = self._query(target_frame, source_frame, time)
+        self._waits.wait_until(query.ready, ns_from_duration(timeout))
+        return query.lookup()
 
     def lookup_transform_full(  # noqa: PLR0917 - tf2_ros signature
         self,
         target_frame: str,
-        target_time: Any,
+        target_time: TimeLike,
         source_frame: str,
-        source_time: Any,
+        source_time: TimeLike,
         fixed_frame: str,
-        timeout: Any = None,
-    ) -> Any:
+        timeout: DurationLike | None = None,
+    ) -> TransformStamped:
         """
         Get the transform between two frames at two times through a fixed frame.
 
         :return: the transform as a ``TransformStamped``.
         """
-        query = _full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
-        self._wait_until(
-            lambda: self.can_transform_full_core(*query)[0], ns_from_duration(timeout)
+        query = self._full_query(
+            _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
         )
-        return self.lookup_transform_full_core(*query)
+        self._waits.wait_until(query.ready, ns_from_duration(timeout))
+        return query.lookup()
 
-    def can_transform(  # type: ignore[override]
+    def can_transform(
         self,
         target_frame: str,
         source_frame: str,
-        time: Any,
-        timeout: Any = None,
+        time: TimeLike,
+        timeout: DurationLike | None = None,
         return_debug_tuple: bool = False,
     ) -> bool | tuple[bool, str]:
         """
@@ -467,22 +474,19 @@ class Buffer(BufferCore):
 
         :return: ``bool``, or ``(bool, error_text)`` when ``return_debug_tuple``.
         """
-        time_ns = ns_from_time(time)
-        self._wait_until(
-            lambda: self.can_transform_core(target_frame, source_frame, time_ns)[0],
-            ns_from_duration(timeout),
-        )
-        answer = self.can_transform_core(target_frame, source_frame, time_ns)
+        query = self._query(target_frame, source_frame, time)
+        self._waits.wait_until(query.ready, ns_from_duration(timeout))
+        answer = query.answer()
         return answer if return_debug_tuple else answer[0]
 
-    def can_transform_full(  # type: ignore[override]  # noqa: PLR0917
+    def can_transform_full(  # noqa: PLR0917 - tf2_ros signature
         self,
         target_frame: str,
-        target_time: Any,
+        target_time: TimeLike,
         source_frame: str,
-        source_time: Any,
+        source_time: TimeLike,
         fixed_frame: str,
-        timeout: Any = None,
+        timeout: DurationLike | None = None,
         return_debug_tuple: bool = False,
     ) -> bool | tuple[bool, str]:
         """
@@ -490,18 +494,22 @@ class Buffer(BufferCore):
 
         :return: ``bool``, or ``(bool, error_text)`` when ``return_debug_tuple``.
         """
-        query = _full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
-        self._wait_until(
-            lambda: self.can_transform_full_core(*query)[0], ns_from_duration(timeout)
+        query = self._full_query(
+            _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
         )
-        answer = self.can_transform_full_core(*query)
+        self._waits.wait_until(query.ready, ns_from_duration(timeout))
+        answer = query.answer()
         return answer if return_debug_tuple else answer[0]
 
     # --------------------------------------------------------------------------- async API
 
     def wait_for_transform_async(
-        self, target_frame: str, source_frame: str, time: Any, timeout: Any = None
-    ) -> Future[Any]:
+        self,
+        target_frame: str,
+        source_frame: str,
+        time: TimeLike,
+        timeout: DurationLike | None = None,
+    ) -> Future[TransformStamped]:
         """
         Wait for a transform without blocking; the future resolves to the ``TransformStamped``.
 
@@ -509,10 +517,8 @@ class Buffer(BufferCore):
             ``TimeoutException``. ``None`` waits forever (upstream behaviour).
         :return: a future (rclpy ``Future`` API) resolving to target_T_source.
         """
-        time_ns = ns_from_time(time)
         return self._wait_async(
-            lambda: self.can_transform_core(target_frame, source_frame, time_ns)[0],
-            lambda: self.lookup_transform_core(target_frame, source_frame, time_ns),
+            self._query(target_frame, source_frame, time),
             timeout,
             f'Timed out waiting for transform from [{source_frame}] to [{target_frame}]',
         )
@@ -520,29 +526,33 @@ class Buffer(BufferCore):
     def wait_for_transform_full_async(  # noqa: PLR0917 - tf2_ros signature
         self,
         target_frame: str,
-        target_time: Any,
+        target_time: TimeLike,
         source_frame: str,
-        source_time: Any,
+        source_time: TimeLike,
         fixed_frame: str,
-        timeout: Any = None,
-    ) -> Future[Any]:
+        timeout: DurationLike | None = None,
+    ) -> Future[TransformStamped]:
         """
         Wait for an advanced-API transform without blocking; resolves to the transform.
 
         :return: a future resolving to the ``TransformStamped``.
         """
-        query = _full_query(target_frame, target_time, source_frame, source_time, fixed_frame)
         return self._wait_async(
-            lambda: self.can_transform_full_core(*query)[0],
-            lambda: self.lookup_transform_full_core(*query),
+            self._full_query(
+                _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
+            ),
             timeout,
             f'Timed out waiting for transform from [{source_frame}] to [{target_frame}] '
             f'via [{fixed_frame}]',
         )
 
     async def lookup_transform_async(
-        self, target_frame: str, source_frame: str, time: Any, timeout: Any = None
-    ) -> Any:
+        self,
+        target_frame: str,
+        source_frame: str,
+        time: TimeLike,
+        timeout: DurationLike | None = None,
+    ) -> TransformStamped:
         """
         Await the transform from the source frame to the target frame (looked up once).
 
@@ -553,88 +563,36 @@ class Buffer(BufferCore):
     async def lookup_transform_full_async(  # noqa: PLR0917 - tf2_ros signature
         self,
         target_frame: str,
-        target_time: Any,
+        target_time: TimeLike,
         source_frame: str,
-        source_time: Any,
+        source_time: TimeLike,
         fixed_frame: str,
-        timeout: Any = None,
-    ) -> Any:
+        timeout: DurationLike | None = None,
+    ) -> TransformStamped:
         """Await an advanced-API transform (looked up once)."""
         return await self.wait_for_transform_full_async(
             target_frame, target_time, source_frame, source_time, fixed_frame, timeout
         )
 
-    def _wait_async(
-        self,
-        ready: Callable[[], bool],
-        lookup: Callable[[], Any],
-        timeout: Any,
-        timeout_text: str,
-    ) -> Future[Any]:
-        future: Future[Any] = Future()
-        if ready():
-            _resolve(future, lookup)
-            return future
-        timeout_ns = ns_from_duration(timeout) if timeout is not None else None
-        deadline_ns = None if timeout_ns is None else self._now_ns() + timeout_ns
-        wait = _AsyncWait(ready, lookup, deadline_ns, future, timeout_text)
-        wait.future.add_done_callback(lambda _: self._forget(wait))
-        with self._condition:
-            self._async_waits.append(wait)
-            if deadline_ns is not None:
-                self._ensure_watcher()
-        # Data may have arrived between the first check and the registration.
-        self._service_async_waits(now_ns=None)
-        return future
-
-    def _forget(self, wait: _AsyncWait) -> None:
-        with self._condition:
-            if wait in self._async_waits:
-                self._async_waits.remove(wait)
-
-    def _service_async_waits(self, now_ns: int | None) -> None:
-        """Resolve ready waits; fail expired ones when ``now_ns`` is given."""
-        with self._condition:
-            pending = list(self._async_waits)
-        for wait in pending:
-            if wait.future.done():
-                continue
-            try:
-                is_ready = wait.ready()
-            except Exception as error:
-                wait.future.set_exception(error)
-                continue
-            if is_ready:
-                _resolve(wait.future, wait.lookup)
-            elif _expired(wait, now_ns):
-                wait.future.set_exception(TimeoutException(wait.timeout_text))
-
-    def _ensure_watcher(self) -> None:
-        """Start the deadline watcher thread if it is not running (caller holds the lock)."""
-        if self._watcher is not None and self._watcher.is_alive():
-            return
-        self._watcher = threading.Thread(
-            target=self._watch_deadlines, name='tf_demo_buffer_deadlines', daemon=True
+    def _query(self, target_frame: str, source_frame: str, time: TimeLike) -> _Query:
+        time_ns = ns_from_time(time)
+        return _Query(
+            lambda: self.can_transform_core(target_frame, source_frame, time_ns),
+            lambda: self.lookup_transform_core(target_frame, source_frame, time_ns),
         )
-        self._watcher.start()
 
-    def _watch_deadlines(self) -> None:
-        """Fail asynchronous waits whose deadline passed on the buffer's clock."""
-        while True:
-            now_ns = self._now_ns()
-            self._service_async_waits(now_ns)
-            with self._condition:
-                deadlines = [
-                    w.deadline_ns
-                    for w in self._async_waits
-                    if w.deadline_ns is not None and not w.future.done()
-                ]
-                if not deadlines:
-                    self._watcher = None
-                    return
-                remaining_ns = min(deadlines) - self._now_ns()
-                if remaining_ns > 0:
-                    self._condition.wait(min(remaining_ns / 1e9, MAX_WAIT_SLICE_S))
+    def _full_query(self, args: tuple[str, int, str, int, str]) -> _Query:
+        """Return the query of the core's advanced-API arguments (see :func:`_full_args`)."""
+        return _Query(
+            lambda: self.can_transform_full_core(*args),
+            lambda: self.lookup_transform_full_core(*args),
+        )
+
+    def _wait_async(
+        self, query: _Query, timeout: DurationLike | None, timeout_text: str
+    ) -> Future[TransformStamped]:
+        timeout_ns = None if timeout is None else ns_from_duration(timeout)
+        return self._waits.wait_async(query.ready, query.lookup, timeout_ns, timeout_text)
 
     # ---------------------------------------------------------------------------- transform
 
@@ -651,8 +609,12 @@ class Buffer(BufferCore):
         return function
 
     def transform(
-        self, object_stamped: Any, target_frame: str, timeout: Any = None, new_type: Any = None
-    ) -> Any:
+        self,
+        object_stamped: StampedT,
+        target_frame: str,
+        timeout: DurationLike | None = None,
+        new_type: type[StampedT] | None = None,
+    ) -> StampedT:
         """
         Transform a stamped geometry message into ``target_frame`` (input not modified).
 
@@ -664,62 +626,63 @@ class Buffer(BufferCore):
         :return: a new message of the same type.
         """
         function = self._transform_function(type(object_stamped))
-        transform = self.lookup_transform(
-            target_frame, object_stamped.header.frame_id, object_stamped.header.stamp, timeout
-        )
-        return _check_new_type(function(object_stamped, transform), new_type)
+        header = object_stamped.header
+        transform = self.lookup_transform(target_frame, header.frame_id, header.stamp, timeout)
+        result: StampedT = function(object_stamped, transform)
+        return _check_new_type(result, new_type)
 
     def transform_full(  # noqa: PLR0917 - tf2_ros signature
         self,
-        object_stamped: Any,
+        object_stamped: StampedT,
         target_frame: str,
-        target_time: Any,
+        target_time: TimeLike,
         fixed_frame: str,
-        timeout: Any = None,
-        new_type: Any = None,
-    ) -> Any:
+        timeout: DurationLike | None = None,
+        new_type: type[StampedT] | None = None,
+    ) -> StampedT:
         """Transform a stamped message to ``target_frame`` at ``target_time`` via a fixed frame."""
         function = self._transform_function(type(object_stamped))
+        header = object_stamped.header
         transform = self.lookup_transform_full(
-            target_frame,
-            target_time,
-            object_stamped.header.frame_id,
-            object_stamped.header.stamp,
-            fixed_frame,
-            timeout,
+            target_frame, target_time, header.frame_id, header.stamp, fixed_frame, timeout
         )
-        return _check_new_type(function(object_stamped, transform), new_type)
+        result: StampedT = function(object_stamped, transform)
+        return _check_new_type(result, new_type)
 
     # ------------------------------------------------------------------------ introspection
 
-    def get_latest_common_time(self, target_frame: str, source_frame: str) -> Any:
+    def get_latest_common_time(self, target_frame: str, source_frame: str) -> Time:
         """Return the latest time at which both frames are connected, as a ``Time``."""
-        from tf_demo.transport.clock import Time
+        return Time(nanoseconds=self.core.get_latest_common_time(target_frame, source_frame))
 
-        return Time(
-            nanoseconds=BufferCore.get_latest_common_time(self, target_frame, source_frame)
-        )
-
-    def all_frames_as_yaml(self, current_time: Any = 0) -> str:
+    def all_frames_as_yaml(self, current_time: TimeLike = 0) -> str:
         """Return tf2's YAML description of every frame."""
-        return BufferCore.all_frames_as_yaml(self, ns_from_time(current_time))
+        return self.core.all_frames_as_yaml(ns_from_time(current_time))
+
+    def all_frames_as_string(self) -> str:
+        """Return tf2's text description of every frame."""
+        return self.core.all_frames_as_string()
 
     def clear(self) -> None:
         """Forget all dynamic transforms (static ones stay), as tf2 does."""
-        BufferCore.clear(self)
-        self._wake()
+        self.core.clear()
+        self._waits.wake()
+
+    def frame_ids(self) -> list[str]:
+        """Return every known frame name (tf_demo's name for ``_getFrameStrings``)."""
+        return self.core.frame_ids()
 
     def _frameExists(self, frame_id: str) -> bool:  # noqa: N802 - tf2_py name
-        return self.frame_exists(frame_id)
+        return self.core.frame_exists(frame_id)
 
     def _getFrameStrings(self) -> list[str]:  # noqa: N802 - tf2_py name
-        return self.frame_ids()
+        return self.core.frame_ids()
 
-    def _allFramesAsDot(self, time: Any = 0) -> str:  # noqa: N802 - tf2_py name
-        return self.all_frames_as_dot(ns_from_time(time))
+    def _allFramesAsDot(self, time: TimeLike = 0) -> str:  # noqa: N802 - tf2_py name
+        return self.core.all_frames_as_dot(ns_from_time(time))
 
 
-def _create_frames_service(node: Any, buffer: Buffer) -> Any:
+def _create_frames_service(node: Node, buffer: Buffer) -> object:
     """
     Offer tf2_ros's ``tf2_frames`` service (``tf2_msgs/srv/FrameGraph``) as tf2_ros does.
 
@@ -730,18 +693,21 @@ def _create_frames_service(node: Any, buffer: Buffer) -> Any:
     create_service = getattr(node, 'create_service', None)
     if create_service is None:
         return None
-    from tf_demo.transport.messages import service_module
+    frame_graph: type[FrameGraph] = service_module('tf2_msgs').FrameGraph
 
-    frame_graph = service_module('tf2_msgs').FrameGraph
-
-    def answer(_request: Any, _response: Any) -> Any:
+    def answer(_request: object, _response: object) -> FrameGraph_Response:
         return frame_graph.Response(frame_yaml=buffer.all_frames_as_yaml())
 
-    return create_service(frame_graph, 'tf2_frames', answer)
+    service: object = create_service(frame_graph, 'tf2_frames', answer)
+    return service
 
 
-def _full_query(
-    target_frame: str, target_time: Any, source_frame: str, source_time: Any, fixed_frame: str
+def _full_args(
+    target_frame: str,
+    target_time: TimeLike,
+    source_frame: str,
+    source_time: TimeLike,
+    fixed_frame: str,
 ) -> tuple[str, int, str, int, str]:
     """Return the core's advanced-API arguments, times in integer nanoseconds."""
     return (
@@ -753,26 +719,7 @@ def _full_query(
     )
 
 
-def _debug_tuple(answer: bool | tuple[bool, str]) -> tuple[bool, str]:
-    if isinstance(answer, tuple):
-        return bool(answer[0]), str(answer[1])
-    return bool(answer), ''
-
-
-def _resolve(future: Future[Any], lookup: Callable[[], Any]) -> None:
-    try:
-        result = lookup()
-    except Exception as error:
-        future.set_exception(error)
-    else:
-        future.set_result(result)
-
-
-def _expired(wait: _AsyncWait, now_ns: int | None) -> bool:
-    return now_ns is not None and wait.deadline_ns is not None and now_ns >= wait.deadline_ns
-
-
-def _check_new_type(result: Any, new_type: Any) -> Any:
+def _check_new_type(result: StampedT, new_type: type[StampedT] | None) -> StampedT:
     if new_type is None or isinstance(result, new_type):
         return result
     msg = f'cannot convert {type(result).__name__} to {getattr(new_type, "__name__", new_type)}'

@@ -36,11 +36,30 @@ The authority recorded for each transform is ``'default_authority'``, as in tf2_
 
 from __future__ import annotations
 
+from collections.abc import Callable
 import contextlib
 import threading
-from typing import Any
+from typing import Protocol
+from typing import TYPE_CHECKING
 
+from tf_demo.msgs import cdr
 from tf_demo.msgs.log_throttle import PerWriterThrottle
+from tf_demo.ros.buffer import Buffer
+from tf_demo.transport import create_node
+from tf_demo.transport import ok
+from tf_demo.transport.callback_groups import ReentrantCallbackGroup
+from tf_demo.transport.executors import SingleThreadedExecutor
+from tf_demo.transport.messages import tf2_msgs
+from tf_demo.transport.qos import DynamicListenerQoS
+from tf_demo.transport.qos import StaticListenerQoS
+
+if TYPE_CHECKING:
+    from tf_demo.msgs.convert import TransformStampedLike
+    from tf_demo.msgs.log_throttle import Writer
+    from tf_demo.msgs.tf2_msgs import TFMessage
+    from tf_demo.transport.dds.endpoints import DdsSubscription
+    from tf_demo.transport.node import Node
+    from tf_demo.transport.qos import QoSProfile
 
 DEFAULT_TF_TOPIC = '/tf'
 DEFAULT_STATIC_TF_TOPIC = '/tf_static'
@@ -49,16 +68,12 @@ SPIN_STOP_CHECK_S = 0.1
 """How long the private executor blocks per ``spin_once`` before checking for shutdown."""
 
 
-def _dynamic_listener_qos() -> Any:
-    from tf_demo.transport.qos import DynamicListenerQoS
+class TransformSink(Protocol):
+    """What the listener needs of a buffer: tf2_ros's two inserts (a tf2_ros ``Buffer`` too)."""
 
-    return DynamicListenerQoS()
+    def set_transform(self, transform: TransformStampedLike, authority: str) -> None: ...
 
-
-def _static_listener_qos() -> Any:
-    from tf_demo.transport.qos import StaticListenerQoS
-
-    return StaticListenerQoS()
+    def set_transform_static(self, transform: TransformStampedLike, authority: str) -> None: ...
 
 
 class TransformListener:
@@ -66,12 +81,12 @@ class TransformListener:
 
     def __init__(
         self,
-        buffer: Any,
-        node: Any,
+        buffer: TransformSink,
+        node: Node,
         *,
         spin_thread: bool = False,
-        qos: Any = None,
-        static_qos: Any = None,
+        qos: QoSProfile | int | None = None,
+        static_qos: QoSProfile | int | None = None,
         tf_topic: str = DEFAULT_TF_TOPIC,
         tf_static_topic: str = DEFAULT_STATIC_TF_TOPIC,
         static_only: bool = False,
@@ -94,11 +109,13 @@ class TransformListener:
         self.buffer = buffer
         self.node = node
         self._stop = threading.Event()
-        self._executor: Any = None
-        self._private_node: Any = None
+        self._executor: SingleThreadedExecutor | None = None
+        self._private_node: Node | None = None
         self.dedicated_listener_thread: threading.Thread | None = None
         self._malformed = PerWriterThrottle('malformed samples')
-        self._set_log_source = getattr(buffer, 'set_log_source', None)
+        self._set_log_source: Callable[[Writer | None], None] | None = getattr(
+            buffer, 'set_log_source', None
+        )
         self._tf_topic = tf_topic
         self._tf_static_topic = tf_static_topic
         host = node
@@ -106,106 +123,85 @@ class TransformListener:
             host = self._private_node = _create_private_node(
                 f'transform_listener_impl_{id(self):x}'
             )
-        group = _reentrant_callback_group()
-        extra: dict[str, Any] = {} if group is None else {'callback_group': group}
-        self.raw_decoding = _can_decode_raw(host, buffer)
-        if self.raw_decoding:
-            extra['raw'] = True
-            from tf_demo.core.buffer_core import BufferCore
-            from tf_demo.msgs import cdr
+        #: The buffer the raw callbacks decode into (None: messages go through set_transform).
+        self._raw_buffer = _raw_decoding_buffer(host, buffer)
+        self.raw_decoding = raw = self._raw_buffer is not None
+        group = ReentrantCallbackGroup()
 
-            self._decode_transforms = cdr.decode_tf_message_transforms
-            self._decode_error = cdr.CdrError
-            self._core_insert = BufferCore.set_transform
-        from tf_demo.transport.messages import tf2_msgs
-
-        self.tf_sub: Any = None
-        if not static_only:
-            self.tf_sub = host.create_subscription(
-                tf2_msgs.TFMessage,
-                tf_topic,
-                self._raw_callback if self.raw_decoding else self.callback,
-                _dynamic_listener_qos() if qos is None else qos,
-                **extra,
+        def subscribe(
+            topic: str, callback: Callable[..., object], profile: QoSProfile | int
+        ) -> DdsSubscription:
+            # The callback takes (bytes, message info) or a message: rclpy's rule, by arity.
+            return host.create_subscription(
+                tf2_msgs.TFMessage, topic, callback, profile, callback_group=group, raw=raw
             )
-        self.tf_static_sub: Any = host.create_subscription(
-            tf2_msgs.TFMessage,
+
+        self.tf_sub: DdsSubscription | None = None
+        if not static_only:
+            self.tf_sub = subscribe(
+                tf_topic,
+                self._raw_callback if raw else self.callback,
+                DynamicListenerQoS() if qos is None else qos,
+            )
+        self.tf_static_sub: DdsSubscription | None = subscribe(
             tf_static_topic,
-            self._raw_static_callback if self.raw_decoding else self.static_callback,
-            _static_listener_qos() if static_qos is None else static_qos,
-            **extra,
+            self._raw_static_callback if raw else self.static_callback,
+            StaticListenerQoS() if static_qos is None else static_qos,
         )
         if spin_thread:
-            self._start_spin_thread()
+            self._start_spin_thread(host)
 
-    def _start_spin_thread(self) -> None:
-        from tf_demo.transport.executors import SingleThreadedExecutor
-
-        self._executor = SingleThreadedExecutor()
-        self._executor.add_node(self._private_node)
+    def _start_spin_thread(self, host: Node) -> None:
+        self._executor = executor = SingleThreadedExecutor()
+        executor.add_node(host)
         setter = getattr(self.buffer, 'set_using_dedicated_thread', None)
         if setter is not None:
             setter(True)
         self.dedicated_listener_thread = threading.Thread(
-            target=self._spin, name='tf_demo_transform_listener', daemon=True
+            target=self._spin, args=(executor,), name='tf_demo_transform_listener', daemon=True
         )
         self.dedicated_listener_thread.start()
 
-    def _spin(self) -> None:
-        from tf_demo.transport import ok
-
+    def _spin(self, executor: SingleThreadedExecutor) -> None:
         while not self._stop.is_set() and ok():
             try:
-                self._executor.spin_once(timeout_sec=SPIN_STOP_CHECK_S)
+                executor.spin_once(timeout_sec=SPIN_STOP_CHECK_S)
             except Exception:
                 if self._stop.is_set() or not ok():
                     return
                 raise
 
-    def callback(self, data: Any) -> None:
+    def callback(self, data: TFMessage) -> None:
         """Insert every transform of a ``/tf`` message."""
         self._insert_all(data, f"a writer on '{self._tf_topic}'", is_static=False)
 
-    def static_callback(self, data: Any) -> None:
+    def static_callback(self, data: TFMessage) -> None:
         """Insert every transform of a ``/tf_static`` message."""
         self._insert_all(data, f"a writer on '{self._tf_static_topic}'", is_static=True)
 
-    def _raw_callback(self, data: bytes, info: dict[str, Any]) -> None:
+    def _raw_callback(self, data: bytes, info: dict[str, bytes]) -> None:
         self._insert_raw(data, info['publisher_gid'], is_static=False)
 
-    def _raw_static_callback(self, data: bytes, info: dict[str, Any]) -> None:
+    def _raw_static_callback(self, data: bytes, info: dict[str, bytes]) -> None:
         self._insert_raw(data, info['publisher_gid'], is_static=True)
 
     def _insert_raw(self, data: bytes, writer: bytes, *, is_static: bool) -> None:
-        """Decode serialised TFMessage bytes straight into the core (no message objects)."""
-        buffer = self.buffer
+        """Decode serialised TFMessage bytes into the buffer (:meth:`Buffer.insert_decoded`)."""
+        buffer = self._raw_buffer
+        if buffer is None:
+            return
         buffer.note_feeder_thread()
         try:
-            transforms = self._decode_transforms(data)
-        except self._decode_error as error:
+            transforms = cdr.decode_tf_message_transforms(data)
+        except cdr.CdrError as error:
             self._log_throttled(writer, f'Dropping a malformed TFMessage: {error}')
             return
-        insert = self._core_insert
-        buffer.set_log_source(writer)
-        try:
-            for parent, child, stamp_ns, translation, rotation in transforms:
-                try:
-                    insert(
-                        buffer,
-                        parent,
-                        child,
-                        stamp_ns,
-                        translation,
-                        rotation,
-                        DEFAULT_AUTHORITY,
-                        is_static,
-                    )
-                except Exception as error:
-                    self._log_insert_failure(writer, parent, child, error)
-        finally:
-            buffer.set_log_source(None)
+        for parent, child, failure in buffer.insert_decoded(
+            transforms, DEFAULT_AUTHORITY, writer, is_static
+        ):
+            self._log_insert_failure(writer, parent, child, failure)
 
-    def _insert_all(self, data: Any, writer: str, *, is_static: bool) -> None:
+    def _insert_all(self, data: TFMessage, writer: str, *, is_static: bool) -> None:
         note = getattr(self.buffer, 'note_feeder_thread', None)
         if note is not None:
             note()
@@ -229,7 +225,7 @@ class TransformListener:
                 set_source(None)
 
     def _log_insert_failure(
-        self, writer: bytes | str, parent: str, child: str, error: Exception
+        self, writer: Writer, parent: str, child: str, error: Exception
     ) -> None:
         self._log_throttled(
             writer,
@@ -237,7 +233,7 @@ class TransformListener:
             'set_transform',
         )
 
-    def _log_throttled(self, writer: bytes | str, text: str, kind: str = '') -> None:
+    def _log_throttled(self, writer: Writer, text: str, kind: str = '') -> None:
         """Log ``text`` if it is the first of its writer (and kind), else count it."""
         line = self._malformed.line(writer, text, kind)
         if line is not None:
@@ -250,7 +246,8 @@ class TransformListener:
         if log_pending is not None:
             log_pending()
         for line in lines:
-            _quietly(lambda text=line: self.node.get_logger().error(text))
+            with contextlib.suppress(Exception):  # teardown is best effort
+                self.node.get_logger().error(line)
 
     def unregister(self) -> None:
         """Stop the private thread (if any) and destroy the subscriptions."""
@@ -274,35 +271,27 @@ class TransformListener:
             self._private_node = None
 
 
-def _can_decode_raw(host: Any, buffer: Any) -> bool:
+def _raw_decoding_buffer(host: Node, buffer: TransformSink) -> Buffer | None:
     """
-    Whether to take serialised bytes: a tf_demo buffer on a node that declares the capability.
+    Return the buffer to decode serialised bytes into: ours, on a capable node; else None.
 
     The standalone node class carries ``supports_raw_subscriptions = True``; rclpy's lacks it.
     """
-    from tf_demo.ros.buffer import Buffer
-
-    return isinstance(buffer, Buffer) and (
+    if isinstance(buffer, Buffer) and (
         getattr(type(host), 'supports_raw_subscriptions', False) is True
-    )
+    ):
+        return buffer
+    return None
 
 
-def _create_private_node(name: str) -> Any:
-    from tf_demo.transport import create_node
-
+def _create_private_node(name: str) -> Node:
     try:
-        return create_node(name, start_parameter_services=False, enable_rosout=False)
+        node: Node = create_node(name, start_parameter_services=False, enable_rosout=False)
     except TypeError:
-        return create_node(name)
+        node = create_node(name)
+    return node
 
 
-def _reentrant_callback_group() -> Any:
-    from tf_demo import transport
-
-    group_type = getattr(transport, 'ReentrantCallbackGroup', None)
-    return None if group_type is None else group_type()
-
-
-def _quietly(action: Any) -> None:
+def _quietly(action: Callable[[], object]) -> None:
     with contextlib.suppress(Exception):  # teardown is best effort
         action()
