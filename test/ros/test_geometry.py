@@ -24,6 +24,7 @@ import math
 import numpy as np
 import pytest
 from tf_demo.msgs import geometry_msgs
+from tf_demo.msgs import std_msgs
 from tf_demo.ros import geometry
 from tf_demo.ros.geometry import do_transform_point
 from tf_demo.ros.geometry import do_transform_polygon_stamped
@@ -207,54 +208,29 @@ def test_polygon_points_transformed_as_points() -> None:
 
 
 @dataclass
-class _Stamp:
-    sec: int = 0
-    nanosec: int = 0
-
-
-@dataclass
-class _Header:
-    stamp: _Stamp = field(default_factory=_Stamp)
-    frame_id: str = ''
-
-
-@dataclass
-class _Quaternion:
-    x: float = 0.0
-    y: float = 0.0
-    z: float = 0.0
-    w: float = 1.0
-
-
-@dataclass
-class _Vector3:
-    x: float = 0.0
-    y: float = 0.0
-    z: float = 0.0
-
-
-@dataclass
 class QuaternionStamped:
-    header: _Header = field(default_factory=_Header)
-    quaternion: _Quaternion = field(default_factory=_Quaternion)
+    """A message class of its own (no such class in the standalone set): duck typing is enough."""
+
+    header: std_msgs.Header = field(default_factory=std_msgs.Header)
+    quaternion: geometry_msgs.Quaternion = field(default_factory=geometry_msgs.Quaternion)
 
 
 @dataclass
 class _Wrench:
-    force: _Vector3 = field(default_factory=_Vector3)
-    torque: _Vector3 = field(default_factory=_Vector3)
+    force: geometry_msgs.Vector3 = field(default_factory=geometry_msgs.Vector3)
+    torque: geometry_msgs.Vector3 = field(default_factory=geometry_msgs.Vector3)
 
 
 @dataclass
 class WrenchStamped:
-    header: _Header = field(default_factory=_Header)
+    header: std_msgs.Header = field(default_factory=std_msgs.Header)
     wrench: _Wrench = field(default_factory=_Wrench)
 
 
 def test_quaternion_stamped_is_rotated_by_any_message_class() -> None:
     """Duck-typed message classes work: a yaw of 90 on yaw 90 gives yaw 180."""
     t = make_transform((9.0, 9.0, 9.0), (0.0, 0.0, SQRT_HALF, SQRT_HALF))
-    q = QuaternionStamped(quaternion=_Quaternion(0.0, 0.0, SQRT_HALF, SQRT_HALF))
+    q = QuaternionStamped(quaternion=geometry_msgs.Quaternion(z=SQRT_HALF, w=SQRT_HALF))
     out = do_transform_quaternion_stamped(q, t)
     assert type(out) is QuaternionStamped
     assert xyzw(out.quaternion) == pytest.approx((0.0, 0.0, 1.0, 0.0), abs=1e-12)
@@ -263,7 +239,8 @@ def test_quaternion_stamped_is_rotated_by_any_message_class() -> None:
 def test_wrench_force_and_torque_are_rotated_only() -> None:
     """C++ semantics: force and torque are rotated; translation does not add a moment."""
     t = make_transform((1.0, 2.0, 3.0), (0.0, 0.0, SQRT_HALF, SQRT_HALF))
-    w = WrenchStamped(wrench=_Wrench(force=_Vector3(1.0, 0.0, 0.0), torque=_Vector3(0, 1.0, 0)))
+    force = geometry_msgs.Vector3(x=1.0)
+    w = WrenchStamped(wrench=_Wrench(force=force, torque=geometry_msgs.Vector3(y=1.0)))
     out = do_transform_wrench_stamped(w, t)
     assert xyz(out.wrench.force) == pytest.approx((0.0, 1.0, 0.0), abs=1e-12)
     assert xyz(out.wrench.torque) == pytest.approx((-1.0, 0.0, 0.0), abs=1e-12)

@@ -38,12 +38,60 @@ from collections.abc import Mapping
 from collections.abc import Sequence
 from types import MappingProxyType
 from typing import Any
+from typing import Protocol
+from typing import TYPE_CHECKING
+from typing import TypeVar
 
 import numpy as np
 import numpy.typing as npt
 
+if TYPE_CHECKING:
+    from tf_demo.msgs.convert import HeaderLike
+    from tf_demo.msgs.convert import QuaternionLike
+    from tf_demo.msgs.convert import TransformStampedLike
+    from tf_demo.msgs.convert import Vector3Like
+    from tf_demo.msgs.geometry_msgs import PointStamped
+    from tf_demo.msgs.geometry_msgs import PolygonStamped
+    from tf_demo.msgs.geometry_msgs import Pose
+    from tf_demo.msgs.geometry_msgs import PoseStamped
+    from tf_demo.msgs.geometry_msgs import PoseWithCovarianceStamped
+    from tf_demo.msgs.geometry_msgs import Vector3Stamped
+
 FloatArray = npt.NDArray[np.float64]
-TransformFunction = Callable[[Any, Any], Any]
+#: ``do_transform_*(msg, transform)``: the table holds one per message type, so ``msg`` (and the
+#: result, of the same type) can only be typed per function.
+TransformFunction = Callable[[Any, 'TransformStampedLike'], Any]
+
+
+class _Stamped(Protocol):
+    @property
+    def header(self) -> HeaderLike: ...
+
+
+class QuaternionStampedLike(_Stamped, Protocol):
+    """A ``geometry_msgs/QuaternionStamped`` of any message class (none in the standalone set)."""
+
+    @property
+    def quaternion(self) -> QuaternionLike: ...
+
+
+class _WrenchLike(Protocol):
+    @property
+    def force(self) -> Vector3Like: ...
+
+    @property
+    def torque(self) -> Vector3Like: ...
+
+
+class WrenchStampedLike(_Stamped, Protocol):
+    """A ``geometry_msgs/WrenchStamped`` of any message class (none in the standalone set)."""
+
+    @property
+    def wrench(self) -> _WrenchLike: ...
+
+
+QuaternionStampedT = TypeVar('QuaternionStampedT', bound=QuaternionStampedLike)
+WrenchStampedT = TypeVar('WrenchStampedT', bound=WrenchStampedLike)
 
 
 def ros_type_name(msg_type: type) -> str:
@@ -107,7 +155,9 @@ def _affine(
     return affine
 
 
-def _affine_from_transform(transform: Any, *, with_translation: bool = True) -> FloatArray:
+def _affine_from_transform(
+    transform: TransformStampedLike, *, with_translation: bool = True
+) -> FloatArray:
     rotation = transform.transform.rotation
     translation = transform.transform.translation
     return _affine(
@@ -121,25 +171,25 @@ def _apply_to_xyz(affine: FloatArray, x: float, y: float, z: float) -> tuple[flo
     return float(moved[0]), float(moved[1]), float(moved[2])
 
 
-def _copy_header_from_transform(out: Any, transform: Any) -> None:
+def _copy_header_from_transform(out: _Stamped, transform: TransformStampedLike) -> None:
     """Set ``out.header`` to a copy of the transform's header (target frame, transform stamp)."""
     out.header.frame_id = transform.header.frame_id
     out.header.stamp.sec = transform.header.stamp.sec
     out.header.stamp.nanosec = transform.header.stamp.nanosec
 
 
-def _set_xyz(target: Any, xyz: tuple[float, float, float]) -> None:
+def _set_xyz(target: Vector3Like, xyz: tuple[float, float, float]) -> None:
     target.x, target.y, target.z = xyz
 
 
-def _set_quat_from_wxyz(target: Any, quat_wxyz: FloatArray) -> None:
+def _set_quat_from_wxyz(target: QuaternionLike, quat_wxyz: FloatArray) -> None:
     target.w = float(quat_wxyz[0])
     target.x = float(quat_wxyz[1])
     target.y = float(quat_wxyz[2])
     target.z = float(quat_wxyz[3])
 
 
-def _rotation_matrix_unnormalised(transform: Any) -> FloatArray:
+def _rotation_matrix_unnormalised(transform: TransformStampedLike) -> FloatArray:
     """Rotation matrix from the unit-quaternion formula (no normalisation), as upstream."""
     rotation = transform.transform.rotation
     q0, q1, q2, q3 = rotation.w, rotation.x, rotation.y, rotation.z
@@ -152,7 +202,9 @@ def _rotation_matrix_unnormalised(transform: Any) -> FloatArray:
     )
 
 
-def transform_covariance(covariance: npt.ArrayLike, transform: Any) -> list[float]:
+def transform_covariance(
+    covariance: npt.ArrayLike, transform: TransformStampedLike
+) -> list[float]:
     """
     Rotate a row-major 6x6 pose covariance: each 3x3 block ``C`` becomes ``R @ C @ R.T``.
 
@@ -174,7 +226,7 @@ def transform_covariance(covariance: npt.ArrayLike, transform: Any) -> list[floa
     return [float(v) for v in out.flat]
 
 
-def do_transform_point(point: Any, transform: Any) -> Any:
+def do_transform_point(point: PointStamped, transform: TransformStampedLike) -> PointStamped:
     """
     Transform a ``PointStamped``: ``p' = R p + t``; header from the transform.
 
@@ -189,7 +241,9 @@ def do_transform_point(point: Any, transform: Any) -> Any:
     return res
 
 
-def do_transform_vector3(vector3: Any, transform: Any) -> Any:
+def do_transform_vector3(
+    vector3: Vector3Stamped, transform: TransformStampedLike
+) -> Vector3Stamped:
     """
     Transform a ``Vector3Stamped``: rotation only (``v' = R v``); inputs are not modified.
 
@@ -205,7 +259,7 @@ def do_transform_vector3(vector3: Any, transform: Any) -> Any:
     return res
 
 
-def do_transform_pose(pose: Any, transform: Any) -> Any:
+def do_transform_pose(pose: Pose, transform: TransformStampedLike) -> Pose:
     """
     Transform an unstamped ``Pose`` (position and orientation) by a ``TransformStamped``.
 
@@ -227,7 +281,7 @@ def do_transform_pose(pose: Any, transform: Any) -> Any:
     return res
 
 
-def do_transform_pose_stamped(pose: Any, transform: Any) -> Any:
+def do_transform_pose_stamped(pose: PoseStamped, transform: TransformStampedLike) -> PoseStamped:
     """
     Transform a ``PoseStamped``; header from the transform.
 
@@ -241,7 +295,9 @@ def do_transform_pose_stamped(pose: Any, transform: Any) -> Any:
     return res
 
 
-def do_transform_pose_with_covariance_stamped(pose: Any, transform: Any) -> Any:
+def do_transform_pose_with_covariance_stamped(
+    pose: PoseWithCovarianceStamped, transform: TransformStampedLike
+) -> PoseWithCovarianceStamped:
     """
     Transform a ``PoseWithCovarianceStamped``: the pose as above, covariance ``R C Rᵀ``.
 
@@ -256,7 +312,9 @@ def do_transform_pose_with_covariance_stamped(pose: Any, transform: Any) -> Any:
     return res
 
 
-def do_transform_polygon_stamped(polygon: Any, transform: Any) -> Any:
+def do_transform_polygon_stamped(
+    polygon: PolygonStamped, transform: TransformStampedLike
+) -> PolygonStamped:
     """
     Transform every ``Point32`` of a ``PolygonStamped`` as a point.
 
@@ -276,7 +334,9 @@ def do_transform_polygon_stamped(polygon: Any, transform: Any) -> Any:
     return res
 
 
-def do_transform_quaternion_stamped(quaternion: Any, transform: Any) -> Any:
+def do_transform_quaternion_stamped(
+    quaternion: QuaternionStampedT, transform: TransformStampedLike
+) -> QuaternionStampedT:
     """
     Rotate a ``QuaternionStamped`` (as C++ tf2_geometry_msgs does); ``w >= 0`` on output.
 
@@ -295,7 +355,9 @@ def do_transform_quaternion_stamped(quaternion: Any, transform: Any) -> Any:
     return res
 
 
-def do_transform_wrench_stamped(wrench: Any, transform: Any) -> Any:
+def do_transform_wrench_stamped(
+    wrench: WrenchStampedT, transform: TransformStampedLike
+) -> WrenchStampedT:
     """
     Rotate the force and torque of a ``WrenchStamped`` (C++ tf2_geometry_msgs semantics).
 
