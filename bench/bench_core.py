@@ -44,6 +44,7 @@ import subprocess
 import sys
 import time
 from typing import Any
+from typing import NamedTuple
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
@@ -134,6 +135,76 @@ def _rss_bytes() -> int:
         return int(statm.read().split()[1]) * os.sysconf('SC_PAGE_SIZE')
 
 
+def _rss_growth(insert_all: Callable[[], None]) -> int:
+    """Return the RSS growth in bytes while ``insert_all()`` fills an already created buffer."""
+    gc.collect()
+    before = _rss_bytes()
+    insert_all()
+    gc.collect()
+    return _rss_bytes() - before
+
+
+def _memory_inserts() -> Iterator[tuple[str, str, int, Vec3, Quat]]:
+    """Yield 100 frames x 10 s x 100 Hz of samples (a star around ``world``), time-ordered."""
+    for k in range(MEMORY_SECONDS * MEMORY_RATE):
+        stamp = T0 + k * SECOND // MEMORY_RATE
+        for index in range(MEMORY_FRAMES):
+            yield ('world', f'f{index}', stamp, *_pose(index, k))
+
+
+class Core(NamedTuple):
+    """How one half drives its core: the same workloads through each core's own API."""
+
+    #: Returns a buffer filled with the inserts.
+    buffer: Callable[[list[Insert]], Any]
+    #: Names of the can-transform and lookup methods (tf2_py's ``*_core`` or ours).
+    can_transform: str
+    lookup_transform: str
+    #: Converts nanoseconds to the core's time argument (prepared outside the timed loops).
+    stamp: Callable[[int], Any]
+    #: ``batch(buffer, stamps_ns)`` returns the run that looks up all the stamps.
+    batch: Callable[[Any, list[int]], Callable[[], None]]
+
+
+def time_workloads(core: Core, repeat: int) -> dict[str, float]:
+    """Time the lookup workloads on ``core``; return seconds per call by workload name."""
+    rep105 = core.buffer(rep105_inserts())
+    stamps = [core.stamp(ns) for ns in interior_stamps(CALLS, 1)]
+    zero = core.stamp(0)
+
+    def can_run() -> None:
+        can = getattr(rep105, core.can_transform)
+        for stamp in stamps:
+            can('map', 'camera_link', stamp)
+
+    def lookup_run() -> None:
+        lookup = getattr(rep105, core.lookup_transform)
+        for stamp in stamps:
+            lookup('map', 'camera_link', stamp)
+
+    def latest_run() -> None:
+        lookup = getattr(rep105, core.lookup_transform)
+        for _ in range(CALLS):
+            lookup('map', 'camera_link', zero)
+
+    chain = core.buffer(chain_inserts())
+    chain_stamps = [core.stamp(ns) for ns in interior_stamps(CALLS, 2)]
+
+    def chain_run() -> None:
+        lookup = getattr(chain, core.lookup_transform)
+        for stamp in chain_stamps:
+            lookup('l0', f'l{CHAIN_LINKS}', stamp)
+
+    batch_run = core.batch(rep105, interior_stamps(BATCH_STAMPS, 3))
+    return {
+        'can_transform': _median_per_call(can_run, CALLS, repeat),
+        'rep105_lookup': _median_per_call(lookup_run, CALLS, repeat),
+        'rep105_lookup_latest': _median_per_call(latest_run, CALLS, repeat),
+        'chain30_lookup': _median_per_call(chain_run, CALLS, repeat),
+        'batch_10000': _median_per_call(batch_run, 1, repeat),
+    }
+
+
 # ----------------------------------------------------------------------------------------------
 # tf2 half (runs under /usr/bin/python3)
 
@@ -172,63 +243,29 @@ def tf2_half(repeat: int) -> dict[str, float]:
     """Time every workload on tf2's C++ core; return seconds per call by workload name."""
     import rospy
 
-    def times(stamps: list[int]) -> list[Any]:
-        return [rospy.Time(s // SECOND, s % SECOND) for s in stamps]
+    def stamp(ns: int) -> Any:
+        return rospy.Time(ns // SECOND, ns % SECOND)
 
-    results: dict[str, float] = {}
     stream = [_tf2_message(p, c, s, t, q) for p, c, s, t, q, _ in insert_stream(CALLS)]
 
     def insert_run() -> None:
-        buffer = _tf2_buffer([])
-        set_transform = buffer.set_transform
+        set_transform = _tf2_buffer([]).set_transform
         for msg in stream:
             set_transform(msg, 'bench')
 
-    results['insert'] = _median_per_call(insert_run, CALLS, repeat)
+    def batch_run(buffer: Any, stamps_ns: list[int]) -> Callable[[], None]:
+        stamps = [stamp(ns) for ns in stamps_ns]
 
-    rep105 = _tf2_buffer(rep105_inserts())
-    stamps = times(interior_stamps(CALLS, 1))
+        def run() -> None:  # tf2 has no batch lookup: one call per stamp
+            lookup = buffer.lookup_transform_core
+            for one in stamps:
+                lookup('map', 'camera_link', one)
 
-    def can_run() -> None:
-        can = rep105.can_transform_core
-        for stamp in stamps:
-            can('map', 'camera_link', stamp)
+        return run
 
-    def lookup_run() -> None:
-        lookup = rep105.lookup_transform_core
-        for stamp in stamps:
-            lookup('map', 'camera_link', stamp)
-
-    zero = rospy.Time(0)
-
-    def latest_run() -> None:
-        lookup = rep105.lookup_transform_core
-        for _ in range(CALLS):
-            lookup('map', 'camera_link', zero)
-
-    results['can_transform'] = _median_per_call(can_run, CALLS, repeat)
-    results['rep105_lookup'] = _median_per_call(lookup_run, CALLS, repeat)
-    results['rep105_lookup_latest'] = _median_per_call(latest_run, CALLS, repeat)
-
-    chain = _tf2_buffer(chain_inserts())
-    chain_stamps = times(interior_stamps(CALLS, 2))
-
-    def chain_run() -> None:
-        lookup = chain.lookup_transform_core
-        for stamp in chain_stamps:
-            lookup('l0', f'l{CHAIN_LINKS}', stamp)
-
-    results['chain30_lookup'] = _median_per_call(chain_run, CALLS, repeat)
-
-    batch_stamps = times(interior_stamps(BATCH_STAMPS, 3))
-
-    def batch_run() -> None:
-        lookup = rep105.lookup_transform_core
-        for stamp in batch_stamps:
-            lookup('map', 'camera_link', stamp)
-
-    results['batch_10000'] = _median_per_call(batch_run, 1, repeat)
-    return results
+    results = {'insert': _median_per_call(insert_run, CALLS, repeat)}
+    core = Core(_tf2_buffer, 'can_transform_core', 'lookup_transform_core', stamp, batch_run)
+    return {**results, **time_workloads(core, repeat)}
 
 
 def tf2_memory() -> int:
@@ -237,20 +274,12 @@ def tf2_memory() -> int:
     import tf2_py
 
     buffer = tf2_py.BufferCore(rospy.Duration(MEMORY_SECONDS + 1))
-    gc.collect()
-    before = _rss_bytes()
-    for parent, child, stamp, t, q in _memory_inserts():
-        buffer.set_transform(_tf2_message(parent, child, stamp, t, q), 'bench')
-    gc.collect()
-    return _rss_bytes() - before
 
+    def insert_all() -> None:
+        for parent, child, stamp, t, q in _memory_inserts():
+            buffer.set_transform(_tf2_message(parent, child, stamp, t, q), 'bench')
 
-def _memory_inserts() -> Iterator[tuple[str, str, int, Vec3, Quat]]:
-    """Yield 100 frames x 10 s x 100 Hz of samples (a star around ``world``), time-ordered."""
-    for k in range(MEMORY_SECONDS * MEMORY_RATE):
-        stamp = T0 + k * SECOND // MEMORY_RATE
-        for index in range(MEMORY_FRAMES):
-            yield ('world', f'f{index}', stamp, *_pose(index, k))
+    return _rss_growth(insert_all)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -271,56 +300,20 @@ def ours_half(repeat: int) -> dict[str, float]:
     """Time every workload on ``tf_demo.core``; return seconds per call by workload name."""
     import numpy as np
 
-    results: dict[str, float] = {}
     stream = insert_stream(CALLS)
 
     def insert_run() -> None:
-        buffer = _our_buffer([])
-        set_transform = buffer.set_transform
+        set_transform = _our_buffer([]).set_transform
         for parent, child, stamp, t, q, _ in stream:
             set_transform(parent, child, stamp, t, q, 'bench')
 
-    results['insert'] = _median_per_call(insert_run, CALLS, repeat)
+    def batch_run(buffer: Any, stamps_ns: list[int]) -> Callable[[], None]:
+        stamps = np.array(stamps_ns, dtype=np.int64)
+        return lambda: buffer.lookup_transforms('map', 'camera_link', stamps)
 
-    rep105 = _our_buffer(rep105_inserts())
-    stamps = interior_stamps(CALLS, 1)
-
-    def can_run() -> None:
-        can = rep105.can_transform
-        for stamp in stamps:
-            can('map', 'camera_link', stamp)
-
-    def lookup_run() -> None:
-        lookup = rep105.lookup_transform
-        for stamp in stamps:
-            lookup('map', 'camera_link', stamp)
-
-    def latest_run() -> None:
-        lookup = rep105.lookup_transform
-        for _ in range(CALLS):
-            lookup('map', 'camera_link', 0)
-
-    results['can_transform'] = _median_per_call(can_run, CALLS, repeat)
-    results['rep105_lookup'] = _median_per_call(lookup_run, CALLS, repeat)
-    results['rep105_lookup_latest'] = _median_per_call(latest_run, CALLS, repeat)
-
-    chain = _our_buffer(chain_inserts())
-    chain_stamps = interior_stamps(CALLS, 2)
-
-    def chain_run() -> None:
-        lookup = chain.lookup_transform
-        for stamp in chain_stamps:
-            lookup('l0', f'l{CHAIN_LINKS}', stamp)
-
-    results['chain30_lookup'] = _median_per_call(chain_run, CALLS, repeat)
-
-    batch_stamps = np.array(interior_stamps(BATCH_STAMPS, 3), dtype=np.int64)
-
-    def batch_run() -> None:
-        rep105.lookup_transforms('map', 'camera_link', batch_stamps)
-
-    results['batch_10000'] = _median_per_call(batch_run, 1, repeat)
-    return results
+    results = {'insert': _median_per_call(insert_run, CALLS, repeat)}
+    core = Core(_our_buffer, 'can_transform', 'lookup_transform', int, batch_run)
+    return {**results, **time_workloads(core, repeat)}
 
 
 def ours_memory() -> int:
@@ -328,12 +321,12 @@ def ours_memory() -> int:
     from tf_demo.core import BufferCore
 
     buffer = BufferCore((MEMORY_SECONDS + 1) * SECOND, log=lambda level, text: None)
-    gc.collect()
-    before = _rss_bytes()
-    for parent, child, stamp, t, q in _memory_inserts():
-        buffer.set_transform(parent, child, stamp, t, q, 'bench')
-    gc.collect()
-    return _rss_bytes() - before
+
+    def insert_all() -> None:
+        for parent, child, stamp, t, q in _memory_inserts():
+            buffer.set_transform(parent, child, stamp, t, q, 'bench')
+
+    return _rss_growth(insert_all)
 
 
 # ----------------------------------------------------------------------------------------------

@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 import logging
 import math
 
@@ -47,21 +48,35 @@ class Log:
         self.lines.append((level, text))
 
 
+def error_text(error: type[Exception], function: Callable[..., object], *args: object) -> str:
+    """Return the text of the ``error`` that ``function(*args)`` raises (failing if none)."""
+    with pytest.raises(error) as info:
+        function(*args)
+    return str(info.value)
+
+
 @pytest.fixture
 def log():
     return Log()
+
+
+#: The rep105 fixture's links: (parent, child, stamp_ns, translation, authority, is_static).
+REP105_LINKS = (
+    ('map', 'odom', 0, (1.0, 0.0, 0.0), 'a', True),
+    ('odom', 'base', 10 * S, (1.0, 0.0, 0.0), 'b', False),
+    ('odom', 'base', 11 * S, (2.0, 0.0, 0.0), 'b', False),
+    ('base', 'laser', 5 * S, (0.0, 0.0, 1.0), 'c', False),
+    ('base', 'laser', 12 * S, (0.0, 0.0, 2.0), 'c', False),
+    ('base', 'cam', 0, (0.0, 1.0, 0.0), 'd', True),
+)
 
 
 @pytest.fixture
 def rep105():
     """map->odom static, odom->base at {10,11}, base->laser at {5,12}, base->cam static."""
     core = BufferCore()
-    core.set_transform('map', 'odom', 0, (1.0, 0.0, 0.0), IDENTITY, 'a', True)
-    core.set_transform('odom', 'base', 10 * S, (1.0, 0.0, 0.0), IDENTITY, 'b')
-    core.set_transform('odom', 'base', 11 * S, (2.0, 0.0, 0.0), IDENTITY, 'b')
-    core.set_transform('base', 'laser', 5 * S, (0.0, 0.0, 1.0), IDENTITY, 'c')
-    core.set_transform('base', 'laser', 12 * S, (0.0, 0.0, 2.0), IDENTITY, 'c')
-    core.set_transform('base', 'cam', 0, (0.0, 1.0, 0.0), IDENTITY, 'd', True)
+    for parent, child, stamp_ns, translation, authority, is_static in REP105_LINKS:
+        core.set_transform(parent, child, stamp_ns, translation, IDENTITY, authority, is_static)
     return core
 
 
@@ -233,22 +248,17 @@ def test_frame_validation_texts():
     """Empty, slash-prefixed and unknown frames raise tf2's exact errors."""
     core = BufferCore()
     core.set_transform('foo', 'bar', S, (0, 0, 0), IDENTITY)
-    with pytest.raises(InvalidArgumentException) as info:
-        core.lookup_transform('', 'bar', 0)
-    assert str(info.value) == (
+    assert error_text(InvalidArgumentException, core.lookup_transform, '', 'bar', 0) == (
         'Invalid argument "" passed to lookupTransform argument target_frame - in tf2 '
         'frame_ids cannot be empty'
     )
-    with pytest.raises(InvalidArgumentException) as info:
-        core.lookup_transform('foo', '/bar', 0)
-    assert str(info.value) == (
+    assert error_text(InvalidArgumentException, core.lookup_transform, 'foo', '/bar', 0) == (
         'Invalid argument "/bar" passed to lookupTransform argument source_frame - in tf2 '
         "frame_ids cannot start with a '/'"
     )
-    with pytest.raises(LookupException) as info:
-        core.lookup_transform('foo', 'baz', 0)
     assert (
-        str(info.value) == '"baz" passed to lookupTransform argument source_frame does not exist. '
+        error_text(LookupException, core.lookup_transform, 'foo', 'baz', 0)
+        == '"baz" passed to lookupTransform argument source_frame does not exist. '
     )
     ok, text = core.can_transform('foo', 'baz', 0, return_debug_tuple=True)
     assert not ok
@@ -283,9 +293,7 @@ def test_links_above_common_ancestor_do_not_count():
         core.set_transform('mid', 'c2', stamp * S, (0, 1, 0), IDENTITY)
     assert core.lookup_transform('c1', 'c2', 0).stamp_ns == 6 * S
     assert core.lookup_transform('c1', 'c2', 5 * S + S // 2).translation == (-1.0, 1.0, 0.0)
-    with pytest.raises(BackwardExtrapolationException) as info:
-        core.lookup_transform('root', 'c2', 0)
-    assert str(info.value) == (
+    assert error_text(BackwardExtrapolationException, core.lookup_transform, 'root', 'c2', 0) == (
         'Lookup would require extrapolation into the past.  Requested time 2.000000 but the '
         'earliest data is at time 5.000000, when looking up transform from frame [c2] to frame '
         '[root]'
@@ -298,9 +306,9 @@ def test_zero_stamped_dynamic_link_is_ignored_by_lct():
     core.set_transform('a', 'b', 0, (0, 0, 0), IDENTITY)
     core.set_transform('b', 'c', 5 * S, (0, 0, 0), IDENTITY)
     assert core.get_latest_common_time('a', 'c') == 5 * S
-    with pytest.raises(NoDataForExtrapolationException) as info:
-        core.lookup_transform('a', 'c', 0)
-    assert str(info.value).startswith(
+    assert error_text(
+        NoDataForExtrapolationException, core.lookup_transform, 'a', 'c', 0
+    ).startswith(
         'Lookup would require extrapolation at time 5.000000, but only time 0.000000 is in the '
         'buffer'
     )
@@ -308,29 +316,32 @@ def test_zero_stamped_dynamic_link_is_ignored_by_lct():
 
 def test_walk_error_messages():
     """foo->bar at {2,3}: future, single-sample and post-clear texts and classes."""
-    core = BufferCore()
-    core.set_transform('foo', 'bar', 2 * S, (0, 0, 0), IDENTITY)
-    with pytest.raises(NoDataForExtrapolationException) as info:
-        core.lookup_transform('foo', 'bar', 4 * S)
-    assert str(info.value) == (
+    single_sample = (
         'Lookup would require extrapolation at time 4.000000, but only time 2.000000 is in the '
-        'buffer' + SUFFIX_BAR_FOO
+        'buffer'
     )
-    core.set_transform('foo', 'bar', 3 * S, (0, 0, 0), IDENTITY)
-    with pytest.raises(ForwardExtrapolationException) as info:
-        core.lookup_transform('foo', 'bar', 4 * S)
-    assert str(info.value) == (
+    future = (
         'Lookup would require extrapolation into the future.  Requested time 4.000000 but the '
-        'latest data is at time 3.000000' + SUFFIX_BAR_FOO
+        'latest data is at time 3.000000'
+    )
+    core = BufferCore()
+    lookup = core.lookup_transform
+    core.set_transform('foo', 'bar', 2 * S, (0, 0, 0), IDENTITY)
+    text = error_text(NoDataForExtrapolationException, lookup, 'foo', 'bar', 4 * S)
+    assert text == single_sample + SUFFIX_BAR_FOO
+    core.set_transform('foo', 'bar', 3 * S, (0, 0, 0), IDENTITY)
+    assert error_text(ForwardExtrapolationException, lookup, 'foo', 'bar', 4 * S) == (
+        future + SUFFIX_BAR_FOO
     )
     # Target-side failure gives the same suffix (source and target as named in the call).
-    with pytest.raises(ForwardExtrapolationException) as info:
-        core.lookup_transform('bar', 'foo', 4 * S)
-    assert str(info.value).endswith(', when looking up transform from frame [foo] to frame [bar]')
+    assert error_text(
+        ForwardExtrapolationException, core.lookup_transform, 'bar', 'foo', 4 * S
+    ).endswith(', when looking up transform from frame [foo] to frame [bar]')
     core.clear()
-    with pytest.raises(NoDataForExtrapolationException) as info:
-        core.lookup_transform('foo', 'bar', 3 * S)
-    assert str(info.value) == SUFFIX_BAR_FOO
+    assert (
+        error_text(NoDataForExtrapolationException, core.lookup_transform, 'foo', 'bar', 3 * S)
+        == SUFFIX_BAR_FOO
+    )
     with pytest.raises(ConnectivityException):
         core.lookup_transform('foo', 'bar', 0)
     assert issubclass(NoDataForExtrapolationException, ExtrapolationException)
@@ -342,16 +353,12 @@ def test_connectivity_text():
     core = BufferCore()
     core.set_transform('a', 'b', S, (0, 0, 0), IDENTITY)
     core.set_transform('c', 'd', S, (0, 0, 0), IDENTITY)
-    with pytest.raises(ConnectivityException) as info:
-        core.lookup_transform('a', 'd', 0)
     text = (
         "Could not find a connection between 'a' and 'd' because they are not part of the same "
         'tree.Tf has two or more unconnected trees.'
     )
-    assert str(info.value) == text
-    with pytest.raises(ConnectivityException) as info:
-        core.lookup_transform('a', 'd', S)
-    assert str(info.value) == text
+    assert error_text(ConnectivityException, core.lookup_transform, 'a', 'd', 0) == text
+    assert error_text(ConnectivityException, core.lookup_transform, 'a', 'd', S) == text
     assert core.can_transform('a', 'd', S, return_debug_tuple=True) == (False, text)
 
 
@@ -362,9 +369,7 @@ def test_loop_is_reported():
     core.set_transform('c', 'a', S, (0, 0, 0), IDENTITY)
     core.set_transform('b', 'c', S, (0, 0, 0), IDENTITY)
     core.set_transform('x', 'y', S, (0, 0, 0), IDENTITY)
-    with pytest.raises(LookupException) as info:
-        core.lookup_transform('x', 'b', S)
-    assert str(info.value) == (
+    assert error_text(LookupException, core.lookup_transform, 'x', 'b', S) == (
         'The tf tree is invalid because it contains a loop.\n'
         'Frame b exists with parent a.\nFrame a exists with parent c.\n'
         'Frame c exists with parent b.\nFrame y exists with parent x.\n\n'
@@ -396,9 +401,9 @@ def test_full_lookup_example():
     ok, text = core.can_transform_full('bar', 9 * S, 'bar', 2 * S, 'foo', True)
     assert not ok
     assert 'into the future' in text
-    with pytest.raises(LookupException) as info:
-        core.lookup_transform_full('bar', 0, 'bar', 0, 'nope')
-    assert 'fixed_frame does not exist' in str(info.value)
+    assert 'fixed_frame does not exist' in error_text(
+        LookupException, core.lookup_transform_full, 'bar', 0, 'bar', 0, 'nope'
+    )
 
 
 def test_full_lookup_composes_with_rotation():
@@ -515,11 +520,9 @@ def test_batch_lookup_equals_single_lookups(rep105):
 def test_batch_lookup_raises_first_failure(rep105):
     """The batch raises what the first failing single lookup raises."""
     times = np.array([10 * S, 13 * S, 1 * S], dtype=np.int64)
-    with pytest.raises(ForwardExtrapolationException) as info:
-        rep105.lookup_transforms('map', 'laser', times)
-    with pytest.raises(ForwardExtrapolationException) as single:
-        rep105.lookup_transform('map', 'laser', 13 * S)
-    assert str(info.value) == str(single.value)
+    assert error_text(
+        ForwardExtrapolationException, rep105.lookup_transforms, 'map', 'laser', times
+    ) == error_text(ForwardExtrapolationException, rep105.lookup_transform, 'map', 'laser', 13 * S)
     with pytest.raises(LookupException):
         rep105.lookup_transforms('map', 'nope', times)
 

@@ -146,20 +146,11 @@ def oracle() -> Iterator[Oracle]:
     process.close()
 
 
-class RandomChooser:
-    """A seeded :class:`strategies.Chooser` for bulk runs."""
+class RandomChooser(random.Random):
+    """A seeded :class:`strategies.Chooser` for bulk runs: ``RandomChooser(seed)``."""
 
-    def __init__(self, seed: int) -> None:
-        """Seed the generator."""
-        self._rng = random.Random(seed)
-
-    def integer(self, low: int, high: int) -> int:
-        """Return an integer in ``[low, high]``."""
-        return self._rng.randint(low, high)
-
-    def real(self, low: float, high: float) -> float:
-        """Return a float in ``[low, high]``."""
-        return self._rng.uniform(low, high)
+    integer = random.Random.randint  # an integer in [low, high]
+    real = random.Random.uniform  # a float in [low, high]
 
 
 # --------------------------------------------------------------------------------------------

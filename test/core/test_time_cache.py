@@ -170,24 +170,26 @@ def test_no_interpolation_across_parent_change():
 def test_failure_messages_and_codes():
     """Empty, single-sample, future and past failures give tf2's codes and texts."""
     cache = TimeCache(10 * S)
-    assert cache.get_data(S) is None
-    assert cache.explain_failure(S) == (ERROR_NO_DATA_FOR_EXTRAPOLATION, '')
+
+    def failure(time_ns: int) -> tuple[int, str]:
+        """Return tf2's ``(code, text)`` at ``time_ns``, where the cache has no sample."""
+        assert cache.get_data(time_ns) is None
+        return cache.explain_failure(time_ns)
+
+    assert failure(S) == (ERROR_NO_DATA_FOR_EXTRAPOLATION, '')
     cache.insert(2 * S, _values(parent=1))
-    assert cache.get_data(4 * S) is None
-    assert cache.explain_failure(4 * S) == (
+    assert failure(4 * S) == (
         ERROR_NO_DATA_FOR_EXTRAPOLATION,
         'Lookup would require extrapolation at time 4.000000, but only time 2.000000 is in the '
         'buffer',
     )
     cache.insert(3 * S, _values(parent=1))
-    assert cache.get_data(4 * S) is None
-    assert cache.explain_failure(4 * S) == (
+    assert failure(4 * S) == (
         ERROR_FORWARD_EXTRAPOLATION,
         'Lookup would require extrapolation into the future.  Requested time 4.000000 but the '
         'latest data is at time 3.000000',
     )
-    assert cache.get_data(1 * S) is None
-    assert cache.explain_failure(1 * S) == (
+    assert failure(1 * S) == (
         ERROR_BACKWARD_EXTRAPOLATION,
         'Lookup would require extrapolation into the past.  Requested time 1.000000 but the '
         'earliest data is at time 2.000000',

@@ -29,7 +29,8 @@ Compatible with tf2_ros's Python listener (plus rolling's ``tf_topic``/``tf_stat
   :mod:`tf_demo.msgs.log_throttle`). The standalone world names the writer by its GUID; rclpy
   (Jazzy) does not tell a subscription who wrote a sample, so there the count is per topic;
 - in the standalone world the subscriptions take the serialised bytes and decode them straight
-  into the buffer's core (no message objects), which is the listener's hot path.
+  into the buffer's core (no message objects) through :meth:`Buffer.insert_decoded
+  <tf_demo.ros.Buffer.insert_decoded>`, the listener's hot path.
 
 The authority recorded for each transform is ``'default_authority'``, as in tf2_ros Python.
 """
