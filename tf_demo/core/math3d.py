@@ -36,8 +36,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 import math
-from typing import overload
 from typing import TYPE_CHECKING
+from typing import TypeVar
 
 import numpy as np
 
@@ -46,8 +46,10 @@ if TYPE_CHECKING:
 
     #: One component for many lanes at once (an array), or the same float for every lane.
     Lane = float | npt.NDArray[np.float64]
-    LaneVec3 = tuple[Lane, Lane, Lane]
-    LaneQuat = tuple[Lane, Lane, Lane, Lane]
+
+#: The component type of :func:`quat_multiply` and :func:`rotate_vector`: floats in, floats out;
+#: lanes in, lanes out.
+Component = TypeVar('Component', float, 'Lane')
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
@@ -96,15 +98,10 @@ __all__ = [
 ]
 
 
-@overload
-def quat_multiply(a: Quat, b: Quat) -> Quat: ...
-
-
-@overload
-def quat_multiply(a: LaneQuat, b: LaneQuat) -> LaneQuat: ...
-
-
-def quat_multiply(a: LaneQuat, b: LaneQuat) -> LaneQuat:
+def quat_multiply(
+    a: tuple[Component, Component, Component, Component],
+    b: tuple[Component, Component, Component, Component],
+) -> tuple[Component, Component, Component, Component]:
     """Return the Hamilton product ``a * b`` (``b`` is applied first), as tf2's ``operator*``."""
     ax, ay, az, aw = a
     bx, by, bz, bw = b
@@ -134,15 +131,10 @@ def quat_normalize(q: Quat) -> Quat:
     return (q[0] * inv, q[1] * inv, q[2] * inv, q[3] * inv)
 
 
-@overload
-def rotate_vector(q: Quat, v: Vec3) -> Vec3: ...
-
-
-@overload
-def rotate_vector(q: LaneQuat, v: LaneVec3) -> LaneVec3: ...
-
-
-def rotate_vector(q: LaneQuat, v: LaneVec3) -> LaneVec3:
+def rotate_vector(
+    q: tuple[Component, Component, Component, Component],
+    v: tuple[Component, Component, Component],
+) -> tuple[Component, Component, Component]:
     """Rotate ``v`` by ``q``: the vector part of ``q * (v, 0) * conj(q)`` (tf2 ``quatRotate``)."""
     qx, qy, qz, qw = q
     vx, vy, vz = v
