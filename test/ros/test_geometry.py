@@ -25,6 +25,8 @@ import numpy as np
 import pytest
 from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import std_msgs
+from tf_demo.msgs.convert import QuaternionLike
+from tf_demo.msgs.convert import Vector3Like
 from tf_demo.ros import geometry
 from tf_demo.ros.geometry import do_transform_point
 from tf_demo.ros.geometry import do_transform_polygon_stamped
@@ -72,12 +74,12 @@ def point_stamped(x: float, y: float, z: float, frame: str = 'a') -> geometry_ms
     return p
 
 
-def xyz(v: object) -> tuple[float, float, float]:
-    return (v.x, v.y, v.z)  # type: ignore[attr-defined]
+def xyz(v: Vector3Like) -> tuple[float, float, float]:
+    return (v.x, v.y, v.z)
 
 
-def xyzw(q: object) -> tuple[float, float, float, float]:
-    return (q.x, q.y, q.z, q.w)  # type: ignore[attr-defined]
+def xyzw(q: QuaternionLike) -> tuple[float, float, float, float]:
+    return (q.x, q.y, q.z, q.w)
 
 
 SQRT_HALF = math.sqrt(0.5)
