@@ -17,13 +17,15 @@ The hot paths' inlined rotation math, pinned to :mod:`tf_demo.core.math3d` withi
 
 math3d is the one source of the rotation math.  The lookup walk
 (``frame_tree.accumulate_side``) and the vectorised walk (``_batch`` with the interval
-constants of ``TimeCache.arrays``) inline lerp, slerp and composition for speed; each test
-below names the copy it pins and compares it with math3d on drawn inputs (quaternions up to
-sign).  Where a test builds the newer rotation from the older one, the angle between them is
-exactly 0 or at least 1e-6 rad: below about 1e-7 rad math3d's slerp (tf2's, which divides the
-dot product by the norms) may find a cosine of exactly 1 and return the older rotation while
-the walk (which skips that division) still interpolates, and the two then differ by up to about
-the angle itself (7e-9 measured at 1e-7 rad).
+constants of ``TimeCache.arrays``) inline lerp, slerp and composition for speed, and math3d
+itself has a fast route (``canonical_quat``'s ``q / |q|``) and vectorised copies (``*_batch``);
+each test below names the copy it pins and compares it with the scalar original on drawn inputs
+(quaternions up to sign where the copy may flip it).  Where a test builds the newer rotation
+from the older one, the angle between them is exactly 0 or at least 1e-6 rad: below about
+1e-7 rad math3d's slerp (tf2's, which divides the dot product by the norms) may find a cosine
+of exactly 1 and return the older rotation while the walk (which skips that division) still
+interpolates, and the two then differ by up to about the angle itself (7e-9 measured at
+1e-7 rad).
 """
 
 from __future__ import annotations
@@ -241,9 +243,11 @@ def _expected_compose(link: Transform, acc: Transform) -> tuple[float, ...]:
 def test_batch_compose_is_math3d_compose(pairs: list[tuple[Transform, Transform]]) -> None:
     """Pins ``_batch._compose`` / ``_compose_translation`` (floats and lane arrays) to math3d."""
     for link, acc in pairs:
-        one = _batch._compose(_batch._link(_flat(link)), _batch._link(_flat(acc)))
-        _assert_close(one[:3], _expected_compose(link, acc)[:3], 'compose translation')
-        _assert_same_rotation(one[3:], _expected_compose(link, acc)[3:])
+        one = [
+            float(v) for v in _batch._compose(_batch._link(_flat(link)), _batch._link(_flat(acc)))
+        ]
+        _assert_close(tuple(one[:3]), _expected_compose(link, acc)[:3], 'compose translation')
+        _assert_same_rotation(tuple(one[3:]), _expected_compose(link, acc)[3:])
     links = np.array([_flat(link) for link, _ in pairs]).T
     accs = np.array([_flat(acc) for _, acc in pairs]).T
     lanes = np.array(_batch._compose(_batch._link(list(links)), _batch._link(list(accs)))).T
@@ -334,3 +338,47 @@ def test_batch_inverse_is_math3d_invert_and_compose(
         t, q = math3d.invert(*target)
         t, q = math3d.compose(t, q, *source)
         assert tuple(row) == (*t, *q)
+
+
+# --- math3d's own fast routes and vectorised copies ---------------------------------------------
+
+
+@given(tfst.raw_quaternions())
+@example((0.0, 0.0, 0.0, -2.0))
+@example((0.5, 0.5, 0.5, -0.5))
+@tfst.profile_settings(200)
+def test_canonical_quat_shortcut_is_the_matrix_route(q: Quat) -> None:
+    """Pins ``canonical_quat``'s ``q / |q|`` shortcut to tf2's route through the matrix."""
+    expected = math3d.quat_from_matrix(math3d.matrix_from_quat(q))
+    _assert_close(math3d.canonical_quat(q), expected, 'canonical quaternion')
+
+
+@given(st.lists(tfst.raw_quaternions(), min_size=1, max_size=8))
+@tfst.profile_settings(150)
+def test_batch_rotation_helpers_are_the_scalar_ones(rows: list[Quat]) -> None:
+    """
+    Pins math3d's vectorised copies row by row to their scalar originals: ``canonical_quat_batch``,
+    ``matrix_from_quat_batch`` and ``quat_from_matrix_batch`` (on the matrices of unit rotations).
+    """
+    quats = np.array(rows)
+    canonical = math3d.canonical_quat_batch(quats)
+    matrices = math3d.matrix_from_quat_batch(quats)
+    unit_matrices = math3d.matrix_from_quat_batch(canonical)
+    back = math3d.quat_from_matrix_batch(unit_matrices)
+    for index, q in enumerate(rows):
+        _assert_close(tuple(canonical[index]), math3d.canonical_quat(q), 'canonical_quat_batch')
+        matrix = math3d.matrix_from_quat(q)
+        _assert_close(tuple(matrices[index].ravel()), sum(matrix, ()), 'matrix_from_quat_batch')
+        unit = math3d.matrix_from_quat(math3d.canonical_quat(q))
+        _assert_close(tuple(back[index]), math3d.quat_from_matrix(unit), 'quat_from_matrix_batch')
+
+
+@given(st.lists(st.tuples(quats, quats, fractions), min_size=1, max_size=8))
+@tfst.profile_settings(150)
+def test_slerp_batch_is_slerp(rows: list[tuple[Quat, Quat, float]]) -> None:
+    """Pins ``slerp_batch`` (lane-wise, same special cases) to ``slerp`` row by row."""
+    q0 = np.array([row[0] for row in rows])
+    q1 = np.array([row[1] for row in rows])
+    out = math3d.slerp_batch(q0, q1, np.array([row[2] for row in rows]))
+    for index, (a, b, ratio) in enumerate(rows):
+        _assert_close(tuple(out[index]), math3d.slerp(a, b, ratio), 'slerp_batch')
