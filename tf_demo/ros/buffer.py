@@ -19,8 +19,8 @@ Same methods, signatures and results as ``tf2_ros.Buffer`` (Jazzy), including th
 core names it inherits upstream (``lookup_transform_core``, ``can_transform_core``...).
 Upstream's ``Buffer`` *is* a ``BufferCore`` whose methods it redefines with other signatures;
 this one *holds* its core (:attr:`Buffer.core`, where tf_demo's extensions such as
-``lookup_transforms`` or ``frames_info`` live), so both keep their own signatures. The waiting is
-:class:`~tf_demo.ros.buffer_waits.BufferWaits`'s. With these improvements:
+``lookup_transforms`` or ``frames_info`` live), so both keep their own signatures. The waits
+live in :class:`~tf_demo.ros.buffer_waits.BufferWaits`. With these improvements:
 
 **Event-driven waits.** ``can_transform``/``lookup_transform`` with a timeout block on a
 :class:`threading.Condition` that the core's insert callback and the clock's jump callback
@@ -76,6 +76,7 @@ from typing import TypeVar
 from tf_demo.core.buffer_core import BufferCore
 from tf_demo.core.exceptions import TimeoutException
 from tf_demo.core.exceptions import TransformException
+from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.msgs.log_throttle import PerWriterThrottle
@@ -114,7 +115,6 @@ if TYPE_CHECKING:
     #: A duration: ``Duration``, a ``builtin_interfaces/Duration`` message or int nanoseconds.
     DurationLike = Duration | StampLike | int
 
-DEFAULT_CACHE_TIME_NS = 10_000_000_000
 JUMP_BACK_CLEAR_THRESHOLD_NS = 1_000_000_000
 """A backward jump of at least this much clears the buffer (tf2_ros Python's threshold)."""
 
