@@ -14,21 +14,37 @@
 
 """Hand-made observations for tf_doctor's tests: static links, streams, a healthy tree."""
 
+from __future__ import annotations
+
+from collections.abc import Iterable
+from collections.abc import Sequence
+
+from tf_demo.cli._doctor_model import Finding
 from tf_demo.cli._doctor_robot import RobotJoint
 from tf_demo.cli._observations import Observation
 from tf_demo.cli._observations import ObservedTransform
 from tf_demo.cli._observations import TF_STATIC_TOPIC
 from tf_demo.cli._observations import TF_TOPIC
+from tf_demo.core.math3d import Vec3
 
 S = 1_000_000_000
 T0 = 1_700_000_000 * S
 
 
-def static(parent, child, t=(0.0, 0.0, 0.0), publisher=''):
+def static(parent: str, child: str, t: Vec3 = (0.0, 0.0, 0.0), publisher: str = '') -> Observation:
     return Observation(TF_STATIC_TOPIC, T0, (ObservedTransform(parent, child, T0, t),), publisher)
 
 
-def stream(parent, child, *, rate_hz=20.0, seconds=2.0, delay_ns=1_000_000, values=None, pub=''):
+def stream(
+    parent: str,
+    child: str,
+    *,
+    rate_hz: float = 20.0,
+    seconds: float = 2.0,
+    delay_ns: int = 1_000_000,
+    values: Sequence[Vec3] | None = None,
+    pub: str = '',
+) -> list[Observation]:
     count = int(rate_hz * seconds)
     result = []
     for i in range(count):
@@ -39,7 +55,7 @@ def stream(parent, child, *, rate_hz=20.0, seconds=2.0, delay_ns=1_000_000, valu
     return result
 
 
-def later(observations, seconds):
+def later(observations: Iterable[Observation], seconds: int) -> list[Observation]:
     """The same messages, received and stamped ``seconds`` later."""
     shift = seconds * S
     return [
@@ -56,7 +72,7 @@ def later(observations, seconds):
     ]
 
 
-def healthy():
+def healthy() -> list[Observation]:
     return [
         static('map', 'odom'),
         *stream('odom', 'base_link'),
@@ -65,7 +81,7 @@ def healthy():
     ]
 
 
-def kinds(findings):
+def kinds(findings: Iterable[Finding]) -> list[str]:
     return sorted(f.kind for f in findings)
 
 

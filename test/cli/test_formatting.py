@@ -170,7 +170,7 @@ def test_generate_dot_without_data():
     assert formatting.generate_dot(None, (0, 0)) == 'digraph G { "No tf data received" }'
 
 
-def _info(parent):
+def _info(parent: str) -> dict[str, object]:
     return {
         'parent': parent,
         'broadcaster': 'b',

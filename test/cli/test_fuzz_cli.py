@@ -98,7 +98,7 @@ numbers = st.one_of(
     st.integers().map(str),
     st.integers(min_value=0, max_value=5000).map(lambda n: '9' * n),
 )
-words = st.text(st.characters(blacklist_categories=('Cs',)), max_size=12) | st.sampled_from(
+words = st.text(st.characters(blacklist_categories=['Cs']), max_size=12) | st.sampled_from(
     ['--ros-args', '--', '-p', '-r', '-h', '--help', '--json', '--limit', '--precision']
 )
 

@@ -14,6 +14,10 @@
 
 """Real-process tests of the tf tools over DDS on loopback (each test on its own domain)."""
 
+from __future__ import annotations
+
+from collections.abc import Callable
+from collections.abc import Iterator
 import json
 import os
 from pathlib import Path
@@ -24,7 +28,11 @@ import stat
 import subprocess
 import sys
 import time
+from typing import IO
+from typing import Protocol
+from typing import TypedDict
 
+from conftest import Processes
 from conftest import run_captured
 import pytest
 from tf_demo.cli._snapshot import read_snapshot
@@ -34,14 +42,21 @@ from tf_demo.cli.formatting import STATIC_USAGE
 pytestmark = [pytest.mark.dds]
 PEER = Path(__file__).with_name('tf_fault_peer.py')
 LOG_PREFIX = r'\[(INFO|WARN|ERROR)\] \[\d+\.\d{9}\] \[[^\]]*\]: '
+Entry = dict[str, object]  # one transform of a tf_fault_peer scenario (see its docstring)
+
+
+class StartPeer(Protocol):
+    """The ``peers`` fixture: start a tf_fault_peer publishing ``entries``."""
+
+    def __call__(self, *entries: Entry) -> subprocess.Popen[str]: ...
 
 
 @pytest.fixture
-def peers(world_env):
+def peers(world_env: dict[str, str]) -> Iterator[StartPeer]:
     """Start tf_fault_peer processes publishing a JSON scenario; stop them at the end."""
-    started = []
+    started: list[subprocess.Popen[str]] = []
 
-    def start(*entries):
+    def start(*entries: Entry) -> subprocess.Popen[str]:
         process = subprocess.Popen(
             [sys.executable, str(PEER), json.dumps(list(entries))],
             env=world_env,
@@ -50,6 +65,8 @@ def peers(world_env):
             text=True,
         )
         started.append(process)
+        assert process.stdout is not None
+        assert process.stderr is not None
         assert process.stdout.readline().strip() == 'ready', process.stderr.read()
         return process
 
@@ -64,14 +81,20 @@ def peers(world_env):
             process.wait()
 
 
-def run(spawn, name, *args, timeout=60):
+def run(spawn: Processes, name: str, *args: str, timeout: float = 60) -> tuple[int, str, str]:
     """Run one of our executables to completion; return (exit code, stdout, stderr)."""
     process = spawn.start(name, *args)
     out, err = process.communicate(timeout=timeout)
     return process.returncode, out, err
 
 
-def static(parent, child, t=(0.0, 0.0, 0.0), group='main', q=(0.0, 0.0, 0.0, 1.0)):
+def static(
+    parent: str,
+    child: str,
+    t: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    group: str = 'main',
+    q: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 1.0),
+) -> Entry:
     return {
         'parent': parent,
         'child': child,
@@ -82,7 +105,7 @@ def static(parent, child, t=(0.0, 0.0, 0.0), group='main', q=(0.0, 0.0, 0.0, 1.0
     }
 
 
-def dynamic(parent, child, **extra):
+def dynamic(parent: str, child: str, **extra: object) -> Entry:
     return {'parent': parent, 'child': child, 'static': False, **extra}
 
 
@@ -228,10 +251,12 @@ def test_echo_json_and_inverse_direction(spawn, peers):
     assert record['source_frame'] == 'laser'
 
 
-def read_lines(stream, found, what, limit_s=60.0):
+def read_lines(
+    stream: IO[str], found: Callable[[str], bool], what: str, limit_s: float = 60.0
+) -> list[str]:
     """Read ``stream`` until a line ``found`` accepts (a guard against hangs); return the lines."""
     deadline = time.monotonic() + limit_s
-    lines = []
+    lines: list[str] = []
     while time.monotonic() < deadline:
         ready, _, _ = select.select([stream], [], [], 0.5)
         if not ready:
@@ -246,8 +271,9 @@ def read_lines(stream, found, what, limit_s=60.0):
     return lines
 
 
-def read_until(process, marker):
+def read_until(process: subprocess.Popen[str], marker: str) -> list[str]:
     """Read the process' stdout until a line starting with ``marker``."""
+    assert process.stdout is not None
     return read_lines(
         process.stdout, lambda line: line.startswith(marker), f'starting with {marker!r}'
     )
@@ -272,8 +298,9 @@ def test_echo_failure_block_when_the_tree_changes(spawn, peers):
     assert echo.stdout.readline() == '\n'
 
 
-def read_stderr_until(process, marker):
+def read_stderr_until(process: subprocess.Popen[str], marker: str) -> str:
     """Read the process' stderr until a line containing ``marker``; return that line."""
+    assert process.stderr is not None
     return read_lines(process.stderr, lambda line: marker in line, f'with {marker!r}')[-1]
 
 
@@ -356,10 +383,30 @@ def test_view_frames_without_data(spawn, tmp_path):
 # --- tf_doctor ---------------------------------------------------------------------------------
 
 
-def doctor(spawn, *args):
+class FindingRecord(TypedDict):
+    """One finding of ``tf_doctor --json``."""
+
+    kind: str
+    severity: str
+    frames: list[str]
+    message: str
+    fix: str
+
+
+class DoctorReport(TypedDict):
+    """The report ``tf_doctor --json`` prints."""
+
+    source: str
+    healthy: bool
+    summary: dict[str, int]
+    findings: list[FindingRecord]
+
+
+def doctor(spawn: Processes, *args: str) -> tuple[int, DoctorReport]:
     code, out, err = run(spawn, 'tf_doctor', '-t', '2.5', '--json', *args)
     assert err == '' or 'error' not in err.lower(), err
-    return code, json.loads(out)
+    report: DoctorReport = json.loads(out)
+    return code, report
 
 
 def test_doctor_calls_a_healthy_tree_healthy(spawn, peers):
@@ -496,7 +543,9 @@ def test_saver_loader_round_trip(spawn, peers, tmp_path):
         ('odom', 'base_link', False),
         ('base_link', 'laser', True),
     ]
-    assert first.transforms[1].rate_hz > 5
+    rate_hz = first.transforms[1].rate_hz
+    assert rate_hz is not None
+    assert rate_hz > 5
     source.send_signal(signal.SIGINT)
     source.wait(timeout=30)
     loader = spawn.start('tf_loader', 'first.yaml')
@@ -629,7 +678,7 @@ def test_monitor_usage_exit_255(spawn):
     assert err.endswith('[]: TF_Monitor: usage: tf2_monitor framea frameb\n')
 
 
-def installed_script(name):
+def installed_script(name: str) -> Path:
     """The installed console script ``name``: in the venv's bin, else the overlay's lib/tf_demo."""
     candidates = [Path(sys.executable).parent / name]
     candidates += [

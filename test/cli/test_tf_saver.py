@@ -24,15 +24,23 @@ from tf_demo.cli._observations import TF_STATIC_TOPIC
 from tf_demo.cli._observations import TF_TOPIC
 from tf_demo.cli.tf_saver import latest_links
 from tf_demo.cli.tf_saver import select_links
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 
 S = 1_000_000_000
 
 
-def message(topic, receive_s, *transforms):
+def message(topic: str, receive_s: float, *transforms: ObservedTransform) -> Observation:
     return Observation(topic, int(receive_s * S), tuple(transforms))
 
 
-def link(parent, child, stamp_s=0.0, t=(0.0, 0.0, 0.0), q=(0.0, 0.0, 0.0, 1.0)):
+def link(
+    parent: str,
+    child: str,
+    stamp_s: float = 0.0,
+    t: Vec3 = (0.0, 0.0, 0.0),
+    q: Quat = (0.0, 0.0, 0.0, 1.0),
+) -> ObservedTransform:
     return ObservedTransform(parent, child, int(stamp_s * S), t, q)
 
 
@@ -51,7 +59,9 @@ def test_newest_link_rate_and_normalization():
     assert links['odom'].is_static
     assert links['base'].translation == (10.0, 0.0, 0.0)
     assert links['base'].stamp_ns == S
-    assert math.isclose(links['base'].rate_hz, 11.0)
+    rate_hz = links['base'].rate_hz
+    assert rate_hz is not None
+    assert math.isclose(rate_hz, 11.0)
     assert links['base'].sample_count == 12
 
 

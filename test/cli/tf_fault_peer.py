@@ -24,37 +24,61 @@ through ``values`` when given. ``volatile``/``best_effort`` break tf2's QoS on p
 ``ready`` once everything was sent the first time.
 """
 
+from __future__ import annotations
+
+from collections.abc import Sequence
 import json
 import signal
 import sys
 import time
+from typing import TypedDict
 
 from tf_demo import transport
 from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.ros import StaticTransformBroadcaster
 from tf_demo.ros import TransformBroadcaster
 from tf_demo.transport.messages import geometry_msgs
+from tf_demo.transport.node import Node
 from tf_demo.transport.qos import DurabilityPolicy
 from tf_demo.transport.qos import QoSProfile
 from tf_demo.transport.qos import ReliabilityPolicy
 
 
-def main():
-    spec = json.loads(sys.argv[1])
-    stop = []
+class Entry(TypedDict, total=False):
+    """One transform of the scenario (the keys of the module docstring)."""
+
+    parent: str
+    child: str
+    t: list[float]
+    q: list[float]
+    static: bool
+    group: str
+    rate: float
+    stamp_offset: float
+    zero_stamp: bool
+    values: list[list[float]]
+    volatile: bool
+    best_effort: bool
+
+
+def main() -> None:
+    spec: list[Entry] = json.loads(sys.argv[1])
+    stop: list[int] = []
     signal.signal(signal.SIGTERM, lambda *_: stop.append(1))
     signal.signal(signal.SIGINT, lambda *_: stop.append(1))
     transport.init(args=['tf_fault_peer'])
-    nodes = {}
-    static_broadcasters = {}
-    dynamic_broadcasters = {}
+    nodes: dict[str, Node] = {}
+    static_broadcasters: dict[str, StaticTransformBroadcaster] = {}
+    dynamic_broadcasters: dict[str, TransformBroadcaster] = {}
 
-    def node_for(group):
+    def node_for(group: str) -> Node:
         if group not in nodes:
             nodes[group] = transport.create_node(f'tf_fault_peer_{group}')
         return nodes[group]
 
-    def message(entry, stamp_ns, translation):
+    def message(
+        entry: Entry, stamp_ns: int, translation: Sequence[float]
+    ) -> geometry_msgs.TransformStamped:
         msg = geometry_msgs.TransformStamped()
         rotation = tuple(entry.get('q', (0.0, 0.0, 0.0, 1.0)))
         fill_transform_stamped(
@@ -62,7 +86,7 @@ def main():
         )
         return msg
 
-    dynamic = []
+    dynamic: list[Entry] = []
     for entry in spec:
         group = entry.get('group', 'main')
         if entry.get('static', False):
@@ -94,7 +118,7 @@ def main():
             group = entry.get('group', 'main')
             now = nodes[group].get_clock().now().nanoseconds
             stamp = 0 if entry.get('zero_stamp') else now + int(entry.get('stamp_offset', 0) * 1e9)
-            values = entry.get('values') or [entry.get('t', [0, 0, 0])]
+            values: Sequence[Sequence[float]] = entry.get('values') or [entry.get('t', [0, 0, 0])]
             translation = values[counts[index] % len(values)]
             counts[index] += 1
             dynamic_broadcasters[group].send_transform(message(entry, stamp, translation))
