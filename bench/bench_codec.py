@@ -81,20 +81,32 @@ def main() -> int:
         assert theirs.serialize(use_version_2=False)[: len(data)] == data
         assert cdr.deserialize(TFMessage, data) == ours
         number = max(20, 20_000 // (count * 10))
-        encode = times_us(lambda ours=ours: cdr.serialize(ours), number, repeat)
-        decode = times_us(lambda data=data: cdr.deserialize(TFMessage, data), number, repeat)
-        fast = times_us(lambda data=data: cdr.decode_tf_message_transforms(data), number, repeat)
-        both = times_us(
-            lambda ours=ours: cdr.deserialize(TFMessage, cdr.serialize(ours)), number, repeat
-        )
-        idl_encode = times_us(
-            lambda theirs=theirs: theirs.serialize(use_version_2=False), number // 4 or 1, repeat
-        )
-        idl_decode = times_us(
-            lambda data=data: TFMessage_.deserialize(data, has_header=True),
-            number // 4 or 1,
-            repeat,
-        )
+
+        # The timed calls, each with its message bound as a default (as a lambda would bind it).
+        def encode_ours(ours: TFMessage = ours) -> bytes:
+            return cdr.serialize(ours)
+
+        def decode_ours(data: bytes = data) -> TFMessage:
+            return cdr.deserialize(TFMessage, data)
+
+        def decode_fast(data: bytes = data) -> list[cdr.TransformTuple]:
+            return cdr.decode_tf_message_transforms(data)
+
+        def round_trip(ours: TFMessage = ours) -> TFMessage:
+            return cdr.deserialize(TFMessage, cdr.serialize(ours))
+
+        def encode_theirs(theirs: TFMessage_ = theirs) -> bytes:
+            return theirs.serialize(use_version_2=False)
+
+        def decode_theirs(data: bytes = data) -> TFMessage_:
+            return TFMessage_.deserialize(data, has_header=True)
+
+        encode = times_us(encode_ours, number, repeat)
+        decode = times_us(decode_ours, number, repeat)
+        fast = times_us(decode_fast, number, repeat)
+        both = times_us(round_trip, number, repeat)
+        idl_encode = times_us(encode_theirs, number // 4 or 1, repeat)
+        idl_decode = times_us(decode_theirs, number // 4 or 1, repeat)
         idl_both = (idl_encode[0] + idl_decode[0], idl_encode[1] + idl_decode[1])
         rows = [
             (f'{count} tf: encode', encode, idl_encode),

@@ -22,6 +22,7 @@ creation.
 """
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
@@ -29,6 +30,12 @@ import cyclonedds.idl.types as idl
 from tf_demo.msgs.sensor_msgs import JointState
 from tf_demo.msgs.std_msgs import Header
 from tf_demo.msgs.tf2_msgs import TFMessage
+
+if TYPE_CHECKING:
+    # sequence[T] is Annotated[Sequence[T], ...] at run time; the checker sees the Sequence.
+    from collections.abc import Sequence as sequence  # noqa: N813
+else:
+    from cyclonedds.idl.types import sequence
 
 
 @dataclass
@@ -80,17 +87,17 @@ class TransformStamped_(IdlStruct, typename='geometry_msgs::msg::dds_::Transform
 @dataclass
 @final
 class TFMessage_(IdlStruct, typename='tf2_msgs::msg::dds_::TFMessage_'):  # noqa: N801
-    transforms: idl.sequence[TransformStamped_]
+    transforms: sequence[TransformStamped_]
 
 
 @dataclass
 @final
 class JointState_(IdlStruct, typename='sensor_msgs::msg::dds_::JointState_'):  # noqa: N801
     header: Header_
-    name: idl.sequence[str]
-    position: idl.sequence[idl.float64]
-    velocity: idl.sequence[idl.float64]
-    effort: idl.sequence[idl.float64]
+    name: sequence[str]
+    position: sequence[idl.float64]
+    velocity: sequence[idl.float64]
+    effort: sequence[idl.float64]
 
 
 def idl_header(header: Header) -> Header_:

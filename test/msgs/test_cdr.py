@@ -278,12 +278,13 @@ def test_mutated_golden_bytes_raise_cdr_error_or_decode(data: Any) -> None:
 @pytest.mark.parametrize(
     ('message', 'match'),
     [
-        (Clock(clock=Vector3()), r'Clock: field clock\.sec: Vector3 object has no field'),
-        (String(data=b'bytes'), r'String: field data: expected str'),
-        (Vector3(x='1.0'), r'Vector3: field x: expected float64'),
+        # Wrong types on purpose (the type: ignores): the encoder's refusal is what is tested.
+        (Clock(clock=Vector3()), r'Clock: field clock\.sec: Vector3 object has no field'),  # type: ignore[arg-type]
+        (String(data=b'bytes'), r'String: field data: expected str'),  # type: ignore[arg-type]
+        (Vector3(x='1.0'), r'Vector3: field x: expected float64'),  # type: ignore[arg-type]
         (Point32(x=1e39), r'Point32: field x: 1e\+39 is out of the float32 range'),
         (Gid(data=bytes(15)), r'Gid: field data: expected exactly 16 elements, got 15'),
-        (JointState(name=['a', 3]), r'JointState: field name\[1\]: expected str'),
+        (JointState(name=['a', 3]), r'JointState: field name\[1\]: expected str'),  # type: ignore[list-item]
         (Clock(clock=Time(sec=2**31)), r'Clock: field clock\.sec: 2147483648 is out of the int32'),
         (String(data='\ud800'), r'String: field data: string cannot be encoded as UTF-8'),
     ],
@@ -517,11 +518,11 @@ def test_a_known_tf_layout_still_rejects_bad_values_naming_the_field() -> None:
     with pytest.raises(cdr.CdrError, match=r'transforms\[1\]\.header\.stamp\.sec: 2147483648'):
         cdr.serialize(message)
     message.transforms[1].header.stamp.sec = 0
-    message.transforms[2].transform.rotation.w = '1'
+    message.transforms[2].transform.rotation.w = '1'  # type: ignore[assignment]  # on purpose
     with pytest.raises(cdr.CdrError, match=r'transforms\[2\]\.transform\.rotation\.w: expected'):
         cdr.serialize(message)
     message.transforms[2].transform.rotation.w = 1.0
-    message.transforms[3].child_frame_id = b'camera'
+    message.transforms[3].child_frame_id = b'camera'  # type: ignore[assignment]  # on purpose
     with pytest.raises(cdr.CdrError, match=r'transforms\[3\]\.child_frame_id: expected str'):
         cdr.serialize(message)
 

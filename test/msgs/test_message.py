@@ -109,8 +109,11 @@ def test_array_and_sequence_defaults_have_rclpy_container_types() -> None:
     assert covariance.dtype == numpy.float64
     assert covariance.shape == (36,)
     assert not covariance.any()
-    assert nav_msgs.Odometry().twist.covariance.shape == (36,)
+    twist_covariance = nav_msgs.Odometry().twist.covariance
+    assert isinstance(twist_covariance, numpy.ndarray)
+    assert twist_covariance.shape == (36,)
     gid = rmw_dds_common.Gid().data
+    assert isinstance(gid, numpy.ndarray)
     assert gid.dtype == numpy.uint8
     assert gid.shape == (16,)
     joint_state = sensor_msgs.JointState()
@@ -131,9 +134,9 @@ def test_keyword_constructor_sets_fields_and_rejects_unknown_names() -> None:
     with pytest.raises(
         TypeError, match=r'Point\(\) got unknown field\(s\) w; its fields are: x, y, z'
     ):
-        geometry_msgs.Point(w=1.0)
+        geometry_msgs.Point(w=1.0)  # type: ignore[arg-type]  # no field w: the refusal is tested
     with pytest.raises(TypeError, match=r'Point\(\) takes keyword arguments only'):
-        geometry_msgs.Point(1.0)  # rclpy takes keywords only
+        geometry_msgs.Point(1.0)  # type: ignore[arg-type]  # rclpy takes keywords only
     assert type(geometry_msgs.Point(x=2.0)) is geometry_msgs.Point
     assert geometry_msgs.Point(x=2.0) == geometry_msgs.Point(x=2.0, y=0.0)
 
@@ -176,6 +179,7 @@ def test_equality_compares_all_fields_and_types() -> None:
     )
     assert sensor_msgs.JointState(position=[1.0]) != sensor_msgs.JointState(position=[1.0, 2.0])
     with_cov = geometry_msgs.PoseWithCovariance()
+    assert isinstance(with_cov.covariance, numpy.ndarray)
     with_cov.covariance[0] = 1.0
     assert with_cov != geometry_msgs.PoseWithCovariance()
     assert geometry_msgs.Vector3() != (0.0, 0.0, 0.0)

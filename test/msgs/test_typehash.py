@@ -19,6 +19,7 @@ from __future__ import annotations
 import pytest
 from tf_demo.msgs.geometry_msgs import Point
 from tf_demo.msgs.tf2_msgs import TFMessage
+from tf_demo.msgs.typehash import JsonValue
 from tf_demo.msgs.typehash import type_description
 from tf_demo.msgs.typehash import type_hash
 
@@ -59,11 +60,25 @@ def test_classes_carry_their_hash() -> None:
     assert Point.__typehash__ == f'RIHS01_{KNOWN_HASHES["geometry_msgs/msg/Point"]}'
 
 
+def _object(value: JsonValue) -> dict[str, JsonValue]:
+    """``value``, a JSON object here."""
+    assert isinstance(value, dict)
+    return value
+
+
+def _array(value: JsonValue) -> list[JsonValue]:
+    """``value``, a JSON array here."""
+    assert isinstance(value, list)
+    return value
+
+
 def test_type_description_lists_referenced_types_sorted_without_defaults() -> None:
     """The hashed description has every nested type once, sorted, and no default values."""
     description = type_description('geometry_msgs/msg/TransformStamped')
-    assert description['type_description']['type_name'] == 'geometry_msgs/msg/TransformStamped'
-    names = [item['type_name'] for item in description['referenced_type_descriptions']]
+    main = _object(description['type_description'])
+    assert main['type_name'] == 'geometry_msgs/msg/TransformStamped'
+    referenced = _array(description['referenced_type_descriptions'])
+    names = [_object(item)['type_name'] for item in referenced]
     assert names == [
         'builtin_interfaces/msg/Time',
         'geometry_msgs/msg/Quaternion',
@@ -71,8 +86,8 @@ def test_type_description_lists_referenced_types_sorted_without_defaults() -> No
         'geometry_msgs/msg/Vector3',
         'std_msgs/msg/Header',
     ]
-    quaternion = description['referenced_type_descriptions'][1]
-    assert quaternion['fields'][3] == {
+    quaternion = _object(referenced[1])
+    assert _array(quaternion['fields'])[3] == {
         'name': 'w',
         'type': {'type_id': 11, 'capacity': 0, 'string_capacity': 0, 'nested_type_name': ''},
     }
