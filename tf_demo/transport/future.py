@@ -25,7 +25,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from collections.abc import Generator
 import threading
-from typing import Any
 from typing import cast
 from typing import Generic
 from typing import TypeVar
@@ -48,7 +47,7 @@ class Future(Generic[T]):
         self._result: T | None = None
         self._exception: BaseException | None = None
         self._cancelled = False
-        self._callbacks: list[Callable[[Future[T]], Any]] = []
+        self._callbacks: list[Callable[[Future[T]], object]] = []
 
     def done(self) -> bool:
         """Return whether a result or an exception was set, or the future was cancelled."""
@@ -84,7 +83,7 @@ class Future(Generic[T]):
         """Complete the future with an exception (ignored if it is already done)."""
         self._complete(exception=exception)
 
-    def add_done_callback(self, callback: Callable[[Future[T]], Any]) -> None:
+    def add_done_callback(self, callback: Callable[[Future[T]], object]) -> None:
         """Call ``callback(future)`` when the future is done (at once if it already is)."""
         with self._lock:
             if not self._event.is_set():

@@ -17,7 +17,6 @@
 from __future__ import annotations
 
 import threading
-from typing import Any
 import weakref
 
 
@@ -32,25 +31,25 @@ class CallbackGroup:
     """
 
     def __init__(self) -> None:
-        self.entities: set[weakref.ref[Any]] = set()
+        self.entities: set[weakref.ref[object]] = set()
 
-    def add_entity(self, entity: Any) -> None:
+    def add_entity(self, entity: object) -> None:
         """Add ``entity`` (a subscription or timer) to the group."""
         self.entities.add(weakref.ref(entity))
 
-    def has_entity(self, entity: Any) -> bool:
+    def has_entity(self, entity: object) -> bool:
         """Return whether ``entity`` was added to the group."""
         return weakref.ref(entity) in self.entities
 
-    def can_execute(self, entity: Any) -> bool:
+    def can_execute(self, entity: object) -> bool:
         """Return whether a callback of ``entity`` may start now."""
         raise NotImplementedError
 
-    def beginning_execution(self, entity: Any) -> bool:
+    def beginning_execution(self, entity: object) -> bool:
         """Ask to start a callback of ``entity``; True obliges to call :meth:`ending_execution`."""
         raise NotImplementedError
 
-    def ending_execution(self, entity: Any) -> None:
+    def ending_execution(self, entity: object) -> None:
         """Tell the group that a callback of ``entity`` finished."""
         raise NotImplementedError
 
@@ -58,17 +57,17 @@ class CallbackGroup:
 class ReentrantCallbackGroup(CallbackGroup):
     """Callbacks of the group may run concurrently, even the same entity's."""
 
-    def can_execute(self, entity: Any) -> bool:
+    def can_execute(self, entity: object) -> bool:
         """Return True: the group never holds a callback back."""
         del entity
         return True
 
-    def beginning_execution(self, entity: Any) -> bool:
+    def beginning_execution(self, entity: object) -> bool:
         """Return True: permission is always given."""
         del entity
         return True
 
-    def ending_execution(self, entity: Any) -> None:
+    def ending_execution(self, entity: object) -> None:
         """Nothing to release."""
         del entity
 
@@ -78,21 +77,21 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
 
     def __init__(self) -> None:
         super().__init__()
-        self._active_entity: Any = None
+        self._active_entity: object = None
         self._lock = threading.Lock()
 
-    def _check_member(self, entity: Any) -> None:
+    def _check_member(self, entity: object) -> None:
         if not self.has_entity(entity):
             msg = f'{entity!r} is not an entity of this callback group'
             raise AssertionError(msg)
 
-    def can_execute(self, entity: Any) -> bool:
+    def can_execute(self, entity: object) -> bool:
         """Return whether no callback of the group is running."""
         with self._lock:
             self._check_member(entity)
             return self._active_entity is None
 
-    def beginning_execution(self, entity: Any) -> bool:
+    def beginning_execution(self, entity: object) -> bool:
         """Take the group for ``entity`` unless a callback of the group is running."""
         with self._lock:
             self._check_member(entity)
@@ -101,7 +100,7 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
                 return True
         return False
 
-    def ending_execution(self, entity: Any) -> None:
+    def ending_execution(self, entity: object) -> None:
         """Release the group taken for ``entity``."""
         with self._lock:
             if self._active_entity is not entity:

@@ -20,21 +20,63 @@ from collections.abc import Callable
 import inspect
 import time
 from typing import Any
+from typing import Generic
 from typing import Protocol
+from typing import TypeAlias
+from typing import TypedDict
+from typing import TypeVar
 import weakref
 
+from tf_demo.msgs._message import Message
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
+from tf_demo.transport.dds.logging import Logger
 from tf_demo.transport.dds.qos import QoSProfile
+from tf_demo.transport.dds.raw_endpoints import RawReader
+from tf_demo.transport.dds.raw_endpoints import RawWriter
 from tf_demo.transport.dds.time import Duration
+
+__all__ = [
+    'AnyPublisher',
+    'DdsPublisher',
+    'DdsSubscription',
+    'MessageInfo',
+    'MsgT',
+    'SubscriptionCallback',
+    'incompatible_qos_reporter',
+]
+
+MsgT = TypeVar('MsgT', bound=Message)
+"""The message class of a publisher or subscription."""
+
+
+class MessageInfo(TypedDict):
+    """
+    What a two-argument subscription callback gets beside the message (rclpy's keys).
+
+    ``publisher_gid`` (the writer's 16-byte GUID) is the standalone world's addition.
+    """
+
+    source_timestamp: int
+    received_timestamp: int
+    publication_sequence_number: int
+    reception_sequence_number: int
+    publisher_gid: bytes
+
+
+_PayloadT = TypeVar('_PayloadT')
+SubscriptionCallback: TypeAlias = (
+    'Callable[[_PayloadT], object] | Callable[[_PayloadT, MessageInfo], object]'
+)
+"""A subscription callback: ``callback(msg)`` or ``callback(msg, message_info)`` (rclpy's)."""
 
 
 class _EndpointOwner(Protocol):
     """What a publisher or subscription asks of the node that created it."""
 
-    def get_logger(self) -> Any: ...
+    def get_logger(self) -> Logger: ...
 
-    def destroy_publisher(self, publisher: DdsPublisher) -> bool: ...
+    def destroy_publisher(self, publisher: DdsPublisher[MsgT]) -> bool: ...
 
     def destroy_subscription(self, subscription: DdsSubscription) -> bool: ...
 
@@ -45,7 +87,12 @@ _WAIT_FOREVER = Duration(seconds=-1)
 _TAKE_BATCH = 256
 
 
-def _as_profile(qos_or_depth: Any) -> Any:
+def _as_profile(qos_or_depth: QoSProfile | int) -> QoSProfile:
+    """
+    Return the profile of ``qos_or_depth`` (an int is a KEEP_LAST depth).
+
+    Any object with rclpy's profile attributes passes as a profile (a user's rclpy profile).
+    """
     if isinstance(qos_or_depth, bool):
         msg = f'qos_profile must be a QoSProfile or a history depth, got {qos_or_depth!r}'
         raise TypeError(msg)
@@ -60,7 +107,7 @@ def _as_profile(qos_or_depth: Any) -> Any:
     raise TypeError(msg)
 
 
-def _message_type_info(msg_type: Any) -> tuple[str, str]:
+def _message_type_info(msg_type: type[Message]) -> tuple[str, str]:
     type_name = getattr(msg_type, '__dds_typename__', None)
     type_hash = getattr(msg_type, '__typehash__', None)
     if not isinstance(type_name, str) or not isinstance(type_hash, str):
@@ -72,11 +119,16 @@ def _message_type_info(msg_type: Any) -> tuple[str, str]:
     return type_name, type_hash
 
 
-class DdsPublisher:
+class DdsPublisher(Generic[MsgT]):
     """A publisher (rclpy ``Publisher`` subset): ``publish``, ``topic_name``, counts."""
 
     def __init__(
-        self, node: _EndpointOwner, msg_type: Any, topic: str, qos_profile: Any, writer: Any
+        self,
+        node: _EndpointOwner,
+        msg_type: type[MsgT],
+        topic: str,
+        qos_profile: QoSProfile,
+        writer: RawWriter,
     ) -> None:
         self._node_ref = weakref.ref(node)
         self.msg_type = msg_type
@@ -92,7 +144,7 @@ class DdsPublisher:
         """The fully qualified topic name."""
         return self.topic_name
 
-    def publish(self, msg: Any) -> None:
+    def publish(self, msg: MsgT | bytes) -> None:
         """Serialize ``msg`` (an instance of the publisher's type, or CDR ``bytes``); send it."""
         if isinstance(msg, self.msg_type):
             payload = self._serialize(msg)
@@ -128,7 +180,7 @@ _SEQUENCE_NUMBER_UNSUPPORTED = 2**64 - 1
 """``RMW_MESSAGE_INFO_SEQUENCE_NUMBER_UNSUPPORTED``: Cyclone does not report sequence numbers."""
 
 
-def _takes_message_info(callback: Callable[..., Any]) -> bool:
+def _takes_message_info(callback: Callable[..., object]) -> bool:
     """
     Whether ``callback`` gets ``(msg, message_info)``, by rclpy's rule.
 
@@ -160,12 +212,12 @@ class DdsSubscription:
     def __init__(
         self,
         node: _EndpointOwner,
-        msg_type: Any,
+        msg_type: type[Message],
         topic: str,
-        callback: Callable[[Any], Any],
+        callback: Callable[..., object],
         *,
-        qos_profile: Any,
-        reader: Any,
+        qos_profile: QoSProfile,
+        reader: RawReader,
         raw: bool,
         callback_group: CallbackGroup | None = None,
     ) -> None:
@@ -187,12 +239,17 @@ class DdsSubscription:
         self._malformed = PerWriterThrottle('malformed samples')
 
     @property
-    def callback(self) -> Callable[..., Any]:
-        """The user callback; setting it re-applies rclpy's one-or-two-argument rule."""
+    def callback(self) -> Callable[..., object]:
+        """
+        The user callback; setting it re-applies rclpy's one-or-two-argument rule.
+
+        It takes the message (or its CDR ``bytes`` when :attr:`raw`), and the
+        :class:`MessageInfo` when :attr:`wants_message_info`.
+        """
         return self._callback
 
     @callback.setter
-    def callback(self, value: Callable[..., Any]) -> None:
+    def callback(self, value: Callable[..., object]) -> None:
         self.wants_message_info = _takes_message_info(value)
         self._callback = value
 
@@ -210,7 +267,7 @@ class DdsSubscription:
         """Return the number of matched publishers."""
         return int(self._reader.matched_count())
 
-    def take_messages(self) -> list[tuple[Any, dict[str, Any] | None]]:
+    def take_messages(self) -> list[tuple[Message | bytes, MessageInfo | None]]:
         """
         Take waiting samples and decode them; malformed ones are logged and dropped.
 
@@ -225,12 +282,12 @@ class DdsSubscription:
             decoded = (self._decode(payload, writer) for payload, _, writer in samples)
             return [(m, None) for m in decoded if m is not None]
         received_ns = time.time_ns()
-        items: list[tuple[Any, dict[str, Any] | None]] = []
+        items: list[tuple[Message | bytes, MessageInfo | None]] = []
         for payload, source_ns, publication_handle in self._reader.take_with_info(_TAKE_BATCH):
             message = payload if self.raw else self._decode(payload, publication_handle)
             if message is None:
                 continue
-            info = {
+            info: MessageInfo = {
                 'source_timestamp': source_ns,
                 'received_timestamp': received_ns,
                 'publication_sequence_number': _SEQUENCE_NUMBER_UNSUPPORTED,
@@ -240,7 +297,7 @@ class DdsSubscription:
             items.append((message, info))
         return items
 
-    def _decode(self, payload: bytes, publication_handle: int) -> Any:
+    def _decode(self, payload: bytes, publication_handle: int) -> Message | None:
         """Decode one sample; a malformed one is dropped, logged throttled per writer."""
         try:
             return self._deserialize(self.msg_type, payload)
@@ -263,6 +320,35 @@ class DdsSubscription:
 
     def _close(self) -> None:
         self._reader.close()
+
+
+def incompatible_qos_reporter(
+    logger: Logger, topic: str, *, publisher: bool
+) -> Callable[[str], None]:
+    """
+    Return what logs an incompatible QoS peer of a publisher or subscription on ``topic``.
+
+    rclpy's default event handlers' texts; the topic as the caller spelled it.
+    """
+    if publisher:
+        text = (
+            f"New subscription discovered on topic '{topic}', requesting incompatible QoS. "
+            'No messages will be sent to it. Last incompatible policy: {policy}'
+        )
+    else:
+        text = (
+            f"New publisher discovered on topic '{topic}', offering incompatible QoS. "
+            'No messages will be received from it. Last incompatible policy: {policy}'
+        )
+
+    def report(policy: str) -> None:
+        logger.warning(text.format(policy=policy))
+
+    return report
+
+
+AnyPublisher: TypeAlias = 'DdsPublisher[Any]'
+"""A publisher of any message class (a node's list of them)."""
 
 
 def _refuse_unsupported(event_callbacks: object, qos_overriding_options: object) -> None:

@@ -18,11 +18,11 @@ from __future__ import annotations
 
 from collections import deque
 from collections.abc import Callable
+from collections.abc import Sequence
 import functools
 import inspect
 import threading
 import time
-from typing import Any
 from typing import Protocol
 from typing import TYPE_CHECKING
 from typing import TypeAlias
@@ -32,7 +32,9 @@ from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.clock import ROSClock
 from tf_demo.transport.dds.context import _context
 from tf_demo.transport.dds.context import _participant
+from tf_demo.transport.dds.endpoints import MessageInfo
 from tf_demo.transport.dds.tasks import DdsTask
+from tf_demo.transport.dds.tasks import TaskHandler
 from tf_demo.transport.dds.timers import DdsTimer
 
 if TYPE_CHECKING:
@@ -58,13 +60,19 @@ class _ReaderEntity(Protocol):
     def read_condition(self) -> int: ...
 
     @property
-    def callback(self) -> Callable[..., Any]: ...
+    def callback(self) -> Callable[..., object]: ...
 
-    def take_messages(self) -> list[tuple[Any, dict[str, Any] | None]]: ...
+    def take_messages(self) -> Sequence[tuple[object, MessageInfo | None]]: ...
 
 
 _Entity: TypeAlias = 'DdsTimer | _ReaderEntity'
-_Call: TypeAlias = 'tuple[Callable[..., Any], tuple[Any, ...]]'
+_Call: TypeAlias = 'tuple[Callable[..., object], tuple[object, ...]]'
+
+
+class Completable(Protocol):
+    """What ``spin_until_future_complete`` waits for: a future or a task."""
+
+    def done(self) -> bool: ...
 
 
 def _reader_entities(node: DdsNode) -> list[_ReaderEntity]:
@@ -277,7 +285,7 @@ class DdsExecutor:
         callback = entity.callback
         return [(callback, (msg,) if info is None else (msg, info)) for msg, info in items]
 
-    def _run_callback(self, callback: Callable[..., Any], *args: Any) -> None:
+    def _run_callback(self, callback: Callable[..., object], *args: object) -> None:
         # As in rclpy, an exception raised by user code propagates out of spin(), and an
         # ``async def`` callback becomes a task that is resumed on later spins.
         outcome = callback(*args)
@@ -297,7 +305,7 @@ class DdsExecutor:
 
     # -- tasks -----------------------------------------------------------------------------
 
-    def create_task(self, callback: Any, *args: Any) -> DdsTask:
+    def create_task(self, callback: TaskHandler, *args: object) -> DdsTask:
         """Run a coroutine (or ``callback(*args)``) in this executor; returns its task."""
         task = DdsTask(callback, args)
         with self._tasks_lock:
@@ -374,7 +382,9 @@ class DdsExecutor:
         while _context.ok() and not self._shutdown:
             self.spin_once(None)
 
-    def spin_until_future_complete(self, future: Any, timeout_sec: float | None = None) -> None:
+    def spin_until_future_complete(
+        self, future: Completable, timeout_sec: float | None = None
+    ) -> None:
         """Spin until ``future.done()`` or the timeout."""
         end = None if timeout_sec is None else time.monotonic() + timeout_sec
         while _context.ok() and not self._shutdown and not future.done():

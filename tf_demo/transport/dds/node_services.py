@@ -17,52 +17,49 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
-from typing import cast
 
+from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.context import _graph_changed
+from tf_demo.transport.dds.node_base import NodeBase
 from tf_demo.transport.dds.qos import qos_profile_services_default
+from tf_demo.transport.dds.qos import QoSProfile
+from tf_demo.transport.dds.services import AnyClient
+from tf_demo.transport.dds.services import AnyService
 from tf_demo.transport.dds.services import DdsClient
 from tf_demo.transport.dds.services import DdsService
+from tf_demo.transport.dds.services import RequestT
+from tf_demo.transport.dds.services import ResponseT
+from tf_demo.transport.dds.services import ServiceType
 
 __all__ = ['NodeServicesMixin']
 
 
-class NodeServicesMixin:
-    """
-    rclpy's service and client methods of :class:`~tf_demo.transport.dds.node.DdsNode`.
+class NodeServicesMixin(NodeBase):
+    """rclpy's service and client methods of :class:`~tf_demo.transport.dds.node.DdsNode`."""
 
-    The node provides ``_lock``, ``_services``, ``_clients``, ``_participant``,
-    ``_default_callback_group``, ``resolve_topic_name``, ``get_logger``, ``_check_alive``,
-    ``_wake_executors`` and ``_detach``.
-    """
-
-    _lock: Any
-    _services: list[DdsService]
-    _clients: list[DdsClient]
-    _default_callback_group: Any
+    _services: list[AnyService]
+    _clients: list[AnyClient]
 
     def create_service(
         self,
-        srv_type: Any,
+        srv_type: ServiceType[RequestT, ResponseT],
         srv_name: str,
-        callback: Callable[[Any, Any], Any],
+        callback: Callable[[RequestT, ResponseT], ResponseT],
         *,
-        qos_profile: Any = qos_profile_services_default,
-        callback_group: Any = None,
-    ) -> DdsService:
+        qos_profile: QoSProfile = qos_profile_services_default,
+        callback_group: CallbackGroup | None = None,
+    ) -> DdsService[RequestT, ResponseT]:
         """
         Create a service server; ``callback(request, response)`` returns the response.
 
         It is answered by the executor that spins the node, in ``callback_group`` (default:
         the node's default group); QoS default: ``qos_profile_services_default``.
         """
-        node = cast('Any', self)
-        node._check_alive()
+        self._check_alive()
         group = callback_group or self._default_callback_group
-        name = node.resolve_topic_name(srv_name)
+        name = self.resolve_topic_name(srv_name)
         service = DdsService(
-            node,
+            self,
             srv_type,
             name,
             callback,
@@ -72,58 +69,55 @@ class NodeServicesMixin:
         group.add_entity(service)
         with self._lock:
             self._services.append(service)
-        node._wake_executors()
+        self._wake_executors()
         _graph_changed()
         return service
 
     def create_client(
         self,
-        srv_type: Any,
+        srv_type: ServiceType[RequestT, ResponseT],
         srv_name: str,
         *,
-        qos_profile: Any = qos_profile_services_default,
-        callback_group: Any = None,
-    ) -> DdsClient:
+        qos_profile: QoSProfile = qos_profile_services_default,
+        callback_group: CallbackGroup | None = None,
+    ) -> DdsClient[RequestT, ResponseT]:
         """Create a service client (replies are taken by the executor that spins the node)."""
-        node = cast('Any', self)
-        node._check_alive()
+        self._check_alive()
         group = callback_group or self._default_callback_group
-        name = node.resolve_topic_name(srv_name)
-        client = DdsClient(node, srv_type, name, qos_profile, group)
+        name = self.resolve_topic_name(srv_name)
+        client = DdsClient(self, srv_type, name, qos_profile, group)
         group.add_entity(client)
         with self._lock:
             self._clients.append(client)
-        node._wake_executors()
+        self._wake_executors()
         _graph_changed()
         return client
 
-    def destroy_service(self, service: DdsService) -> bool:
+    def destroy_service(self, service: DdsService[RequestT, ResponseT]) -> bool:
         """Destroy ``service``."""
-        node = cast('Any', self)
-        if not node._detach(self._services, service):
+        if not self._detach(self._services, service):
             return False
-        node._wake_executors()
+        self._wake_executors()
         service._close()
         _graph_changed()
         return True
 
-    def destroy_client(self, client: DdsClient) -> bool:
+    def destroy_client(self, client: DdsClient[RequestT, ResponseT]) -> bool:
         """Destroy ``client`` (its pending futures are cancelled)."""
-        node = cast('Any', self)
-        if not node._detach(self._clients, client):
+        if not self._detach(self._clients, client):
             return False
-        node._wake_executors()
+        self._wake_executors()
         client._close()
         _graph_changed()
         return True
 
     @property
-    def services(self) -> list[DdsService]:
+    def services(self) -> list[AnyService]:
         """The node's service servers (the parameter services included, as in rclpy)."""
         return list(self._services)
 
     @property
-    def clients(self) -> list[DdsClient]:
+    def clients(self) -> list[AnyClient]:
         """The node's service clients."""
         return list(self._clients)
 

@@ -34,7 +34,10 @@ import itertools
 import threading
 import time
 from typing import Any
-from typing import cast
+from typing import Generic
+from typing import Protocol
+from typing import TypeAlias
+from typing import TypeVar
 import weakref
 
 from cyclonedds import _clayer
@@ -42,9 +45,13 @@ from cyclonedds.builtin_types import cqos_to_qos
 from cyclonedds.builtin_types import endpoint_constructor
 from cyclonedds.qos import Policy
 from tf_demo.msgs import cdr
+from tf_demo.msgs._message import Message
 from tf_demo.transport.dds import wire as dds_wire
+from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.cyclone_c import instance_handle
 from tf_demo.transport.dds.cyclone_c import matched_handles
+from tf_demo.transport.dds.logging import Logger
+from tf_demo.transport.dds.qos import QoSProfile
 from tf_demo.transport.dds.service_wire import client_service_id
 from tf_demo.transport.dds.service_wire import decode_sample
 from tf_demo.transport.dds.service_wire import encode_sample
@@ -54,7 +61,52 @@ from tf_demo.transport.dds.service_wire import request_topic
 from tf_demo.transport.dds.service_wire import RequestHeader
 from tf_demo.transport.future import Future
 
-__all__ = ['DdsClient', 'DdsService', 'Future']
+__all__ = [
+    'AnyClient',
+    'AnyService',
+    'DdsClient',
+    'DdsService',
+    'Future',
+    'RequestT',
+    'ResponseT',
+    'ServiceType',
+]
+
+RequestT = TypeVar('RequestT', bound=Message)
+ResponseT = TypeVar('ResponseT', bound=Message)
+_RequestT_co = TypeVar('_RequestT_co', bound=Message, covariant=True)
+_ResponseT_co = TypeVar('_ResponseT_co', bound=Message, covariant=True)
+
+
+class ServiceType(Protocol[_RequestT_co, _ResponseT_co]):
+    """A service type of :mod:`tf_demo.msgs` (``rcl_interfaces.GetParameters``...)."""
+
+    @property
+    def Request(self) -> type[_RequestT_co]: ...  # noqa: N802 - rosidl's name
+
+    @property
+    def Response(self) -> type[_ResponseT_co]: ...  # noqa: N802 - rosidl's name
+
+
+class _ServiceNode(Protocol):
+    """What a service server or client asks of its node."""
+
+    @property
+    def _participant(self) -> dds_wire.DdsParticipant: ...
+
+    @property
+    def _destroyed(self) -> bool: ...
+
+    def get_logger(self) -> Logger: ...
+
+    def destroy_service(self, service: DdsService[RequestT, ResponseT]) -> bool: ...
+
+    def destroy_client(self, client: DdsClient[RequestT, ResponseT]) -> bool: ...
+
+
+#: The decoded samples of a server's or client's reader: ``(header, message, publication)``.
+_MessageT = TypeVar('_MessageT', bound=Message)
+_Sample: TypeAlias = 'tuple[RequestHeader, _MessageT, int]'
 
 _TAKE_BATCH = 64
 #: How long a server waits for the requesting client's reply reader (rmw_cyclonedds: 100 ms).
@@ -79,13 +131,13 @@ def _user_data_key(entity: int, handle: int, key: str, *, subscription: bool) ->
     return parse_user_data(bytes(qos[Policy.Userdata].data)).get(key)
 
 
-def _type_info(srv_type: Any) -> tuple[Any, Any]:
+def _type_info(srv_type: ServiceType[Message, Message]) -> tuple[type[Message], type[Message]]:
     request, response = getattr(srv_type, 'Request', None), getattr(srv_type, 'Response', None)
     for part in (request, response):
         if not isinstance(getattr(part, '__dds_typename__', None), str):
             msg = f'{srv_type!r} is not a service type of tf_demo.msgs (no Request/Response)'
             raise TypeError(msg)
-    return request, response
+    return srv_type.Request, srv_type.Response
 
 
 class _Endpoints:
@@ -95,7 +147,7 @@ class _Endpoints:
         self,
         participant: dds_wire.DdsParticipant,
         service_name: str,
-        srv_type: Any,
+        srv_type: ServiceType[Message, Message],
         qos: dds_wire.EndpointQos,
         *,
         server: bool,
@@ -132,7 +184,7 @@ class _Endpoints:
         self.writer.close()
 
 
-class _Entity:
+class _Entity(Generic[RequestT, ResponseT]):
     """What services and clients share: node, names, endpoints, group, executor hooks."""
 
     wants_message_info = False
@@ -140,11 +192,11 @@ class _Entity:
 
     def __init__(
         self,
-        node: Any,
-        srv_type: Any,
+        node: _ServiceNode,
+        srv_type: ServiceType[RequestT, ResponseT],
         srv_name: str,
-        qos_profile: Any,
-        callback_group: Any,
+        qos_profile: QoSProfile,
+        callback_group: CallbackGroup,
         *,
         server: bool,
     ) -> None:
@@ -182,8 +234,8 @@ class _Entity:
         """The GUID of the writer, for ``ros_discovery_info``."""
         return self._endpoints.writer.guid
 
-    def _take_decoded(self, msg_type: Any) -> list[tuple[RequestHeader, Any, int]]:
-        items = []
+    def _take_decoded(self, msg_type: type[_MessageT]) -> list[_Sample[_MessageT]]:
+        items: list[_Sample[_MessageT]] = []
         for payload, _source_ns, publication in self._endpoints.reader.take_with_info(_TAKE_BATCH):
             try:
                 header, message = decode_sample(msg_type, payload)
@@ -199,7 +251,7 @@ class _Entity:
         self._endpoints.close()
 
 
-class DdsService(_Entity):
+class DdsService(_Entity[RequestT, ResponseT]):
     """
     A service server (rclpy ``Service`` subset); requests are answered in the executor.
 
@@ -209,22 +261,22 @@ class DdsService(_Entity):
 
     def __init__(  # noqa: PLR0917 - rclpy's Service signature
         self,
-        node: Any,
-        srv_type: Any,
+        node: _ServiceNode,
+        srv_type: ServiceType[RequestT, ResponseT],
         srv_name: str,
-        callback: Callable[[Any, Any], Any],
-        qos_profile: Any,
-        callback_group: Any,
+        callback: Callable[[RequestT, ResponseT], ResponseT],
+        qos_profile: QoSProfile,
+        callback_group: CallbackGroup,
     ) -> None:
         super().__init__(node, srv_type, srv_name, qos_profile, callback_group, server=True)
         self.user_callback = callback
-        self.callback: Callable[[Any], None] = self._handle
+        self.callback: Callable[[_Sample[RequestT]], None] = self._handle
 
-    def take_messages(self) -> list[tuple[Any, None]]:
+    def take_messages(self) -> list[tuple[_Sample[RequestT], None]]:
         """Take waiting requests: ``((header, request, publication handle), None)`` items."""
         return [(item, None) for item in self._take_decoded(self.srv_type.Request)]
 
-    def _handle(self, item: tuple[RequestHeader, Any, int]) -> None:
+    def _handle(self, item: _Sample[RequestT]) -> None:
         header, request, publication = item
         response = self.user_callback(request, self.srv_type.Response())
         if not isinstance(response, self.srv_type.Response):
@@ -235,7 +287,9 @@ class DdsService(_Entity):
             raise TypeError(msg)
         self.send_response(response, header, publication)
 
-    def send_response(self, response: Any, header: RequestHeader, publication: int = 0) -> None:
+    def send_response(
+        self, response: ResponseT, header: RequestHeader, publication: int = 0
+    ) -> None:
         """Send ``response`` to the client that sent the request with ``header``."""
         if publication and not self._client_reader_matched(publication):
             return
@@ -276,21 +330,21 @@ _sequence_numbers = itertools.count(1)
 _sequence_lock = threading.Lock()
 
 
-class DdsClient(_Entity):
+class DdsClient(_Entity[RequestT, ResponseT]):
     """A service client (rclpy ``Client`` subset): ``call_async``, ``call``, readiness."""
 
     def __init__(
         self,
-        node: Any,
-        srv_type: Any,
+        node: _ServiceNode,
+        srv_type: ServiceType[RequestT, ResponseT],
         srv_name: str,
-        qos_profile: Any,
-        callback_group: Any,
+        qos_profile: QoSProfile,
+        callback_group: CallbackGroup,
     ) -> None:
         super().__init__(node, srv_type, srv_name, qos_profile, callback_group, server=False)
-        self._pending: dict[int, Future[Any]] = {}
+        self._pending: dict[int, Future[ResponseT]] = {}
         self._pending_lock = threading.Lock()
-        self.callback: Callable[[Any], None] = self._complete
+        self.callback: Callable[[_Sample[ResponseT]], None] = self._complete
 
     def service_is_ready(self) -> bool:
         """Whether a server's request reader and reply writer (same service id) are matched."""
@@ -326,14 +380,14 @@ class DdsClient(_Entity):
             time.sleep(0.05)
         return True
 
-    def call_async(self, request: Any) -> Future[Any]:
+    def call_async(self, request: RequestT) -> Future[ResponseT]:
         """Send ``request``; the returned future completes when the executor takes the reply."""
         if not isinstance(request, self.srv_type.Request):
             msg = f'Expected {self.srv_type.Request.__name__}, got {type(request).__name__}'
             raise TypeError(msg)
         with _sequence_lock:
             sequence_number = next(_sequence_numbers)
-        future: Future[Any] = Future()
+        future: Future[ResponseT] = Future()
         with self._pending_lock:
             self._pending[sequence_number] = future
         header = RequestHeader(self._endpoints.writer_handle, sequence_number)
@@ -345,7 +399,7 @@ class DdsClient(_Entity):
             raise
         return future
 
-    def call(self, request: Any, timeout_sec: float | None = None) -> Any:
+    def call(self, request: RequestT, timeout_sec: float | None = None) -> ResponseT | None:
         """
         Send ``request`` and block until the reply (another thread must spin the node).
 
@@ -354,18 +408,19 @@ class DdsClient(_Entity):
         future = self.call_async(request)
         if not future.wait(timeout_sec):
             self.remove_pending_request(future)
-        if future.exception() is not None:
-            raise cast('BaseException', future.exception())
+        error = future.exception()
+        if error is not None:
+            raise error
         return future.result()
 
-    def remove_pending_request(self, future: Future[Any]) -> None:
+    def remove_pending_request(self, future: Future[ResponseT]) -> None:
         """Forget a pending request; its reply, if one comes, is dropped."""
         with self._pending_lock:
             for key, pending in list(self._pending.items()):
                 if pending is future:
                     del self._pending[key]
 
-    def take_messages(self) -> list[tuple[Any, None]]:
+    def take_messages(self) -> list[tuple[_Sample[ResponseT], None]]:
         """Take this client's replies: ``((header, response, publication handle), None)``."""
         mine = self._endpoints.writer_handle
         return [
@@ -374,7 +429,7 @@ class DdsClient(_Entity):
             if item[0].guid == mine
         ]
 
-    def _complete(self, item: tuple[RequestHeader, Any, int]) -> None:
+    def _complete(self, item: _Sample[ResponseT]) -> None:
         header, response, _ = item
         with self._pending_lock:
             future = self._pending.pop(header.sequence_number, None)
@@ -392,3 +447,9 @@ class DdsClient(_Entity):
         """Destroy this client (same as ``node.destroy_client(self)``)."""
         node = self._node_ref()
         return bool(node.destroy_client(self)) if node is not None else False
+
+
+AnyService: TypeAlias = 'DdsService[Any, Any]'
+"""A service server of any service type (a node's list of them)."""
+AnyClient: TypeAlias = 'DdsClient[Any, Any]'
+"""A service client of any service type (a node's list of them)."""

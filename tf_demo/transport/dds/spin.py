@@ -17,10 +17,10 @@
 from __future__ import annotations
 
 import threading
-from typing import Any
 from typing import TYPE_CHECKING
 
 from tf_demo.transport.dds.context import _context
+from tf_demo.transport.dds.executors import Completable
 from tf_demo.transport.dds.executors import DdsExecutor
 from tf_demo.transport.dds.executors import SingleThreadedExecutor
 
@@ -56,7 +56,7 @@ def spin_once(
 
 def spin_until_future_complete(
     node: DdsNode,
-    future: Any,
+    future: Completable,
     executor: DdsExecutor | None = None,
     timeout_sec: float | None = None,
 ) -> None:

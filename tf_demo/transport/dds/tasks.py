@@ -17,9 +17,15 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from collections.abc import Coroutine
 from collections.abc import Sequence
 import inspect
-from typing import Any
+from typing import TypeAlias
+
+__all__ = ['DdsTask', 'TaskHandler']
+
+TaskHandler: TypeAlias = 'Coroutine[object, object, object] | Callable[..., object]'
+"""What a task runs: a coroutine, or a callable (an ``async def`` function, or a plain one)."""
 
 
 class DdsTask:
@@ -31,15 +37,18 @@ class DdsTask:
     ``tf_demo.ros.Future``'s protocol) therefore works.
     """
 
-    def __init__(self, handler: Any, args: Sequence[Any] = ()) -> None:
+    def __init__(self, handler: TaskHandler, args: Sequence[object] = ()) -> None:
         self._handler = handler
+        self._function = handler if callable(handler) else None
         self._args = tuple(args)
-        self._coroutine: Any = handler if inspect.iscoroutine(handler) else None
+        self._coroutine: Coroutine[object, object, object] | None = (
+            handler if inspect.iscoroutine(handler) else None
+        )
         self._done = False
         self._cancelled = False
-        self._result: Any = None
+        self._result: object = None
         self._exception: BaseException | None = None
-        self._done_callbacks: list[Callable[[DdsTask], Any]] = []
+        self._done_callbacks: list[Callable[[DdsTask], object]] = []
         self._executing = False
 
     def executing(self) -> bool:
@@ -62,7 +71,7 @@ class DdsTask:
                 self._coroutine.close()
             self._finish()
 
-    def result(self) -> Any:
+    def result(self) -> object:
         """Return the task's result; re-raise its exception if it failed."""
         if self._exception is not None:
             raise self._exception
@@ -72,7 +81,7 @@ class DdsTask:
         """Return the exception the task raised, if any."""
         return self._exception
 
-    def add_done_callback(self, callback: Callable[[DdsTask], Any]) -> None:
+    def add_done_callback(self, callback: Callable[[DdsTask], object]) -> None:
         """Call ``callback(task)`` when the task finishes (at once if it already has)."""
         if self._done:
             callback(self)
@@ -85,7 +94,10 @@ class DdsTask:
             return
         try:
             if self._coroutine is None:
-                outcome = self._handler(*self._args)
+                if self._function is None:
+                    msg = f"'{type(self._handler).__name__}' object is not callable"
+                    raise TypeError(msg)
+                outcome = self._function(*self._args)
                 if not inspect.iscoroutine(outcome):
                     self._result = outcome
                     self._finish()
