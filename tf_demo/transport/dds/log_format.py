@@ -30,7 +30,6 @@ from enum import IntEnum
 import os
 import sys
 import time
-from typing import Any
 from typing import TextIO
 
 __all__ = [
@@ -70,7 +69,7 @@ _COLOR_RESET = '\033[0m'
 _ASCII_UPPER = str.maketrans('abcdefghijklmnopqrstuvwxyz', 'ABCDEFGHIJKLMNOPQRSTUVWXYZ')
 
 
-def c_string(value: Any) -> str | None:
+def c_string(value: object) -> str | None:
     """
     Return ``value`` as rclpy's C extension reads a string argument, else None.
 
@@ -83,7 +82,7 @@ def c_string(value: Any) -> str | None:
     return value.partition('\0')[0]
 
 
-def incompatible_arguments(function: str, signature: str, arguments: tuple[Any, ...]) -> str:
+def incompatible_arguments(function: str, signature: str, arguments: tuple[object, ...]) -> str:
     """pybind11's text for a call of ``function`` with arguments of the wrong types."""
     invoked = ', '.join(repr(argument) for argument in arguments)
     return (

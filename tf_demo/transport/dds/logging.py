@@ -24,12 +24,14 @@ emitted. Lines are written in rcutils' format (:mod:`tf_demo.transport.dds.log_f
 from __future__ import annotations
 
 from collections.abc import Callable
+from collections.abc import Mapping
 import contextlib
+import operator
 import os
 import sys
 import threading
 import time
-from typing import Any
+from types import FrameType
 from typing import NamedTuple
 
 from tf_demo.transport.dds.clock import Clock
@@ -93,11 +95,11 @@ def get_logger_effective_level(name: str) -> LoggingSeverity:
     return _STATE.effective_level(name)
 
 
-_SYSTEM_CLOCK: Any = None
+_SYSTEM_CLOCK: Clock | None = None
 """The throttle filter's default time source, rclpy's module-level ``Clock()`` (system time)."""
 
 
-def _system_clock() -> Any:
+def _system_clock() -> Clock:
     """Return the one system-time clock the throttle filter defaults to (made on first use)."""
     global _SYSTEM_CLOCK
     if _SYSTEM_CLOCK is None:
@@ -105,7 +107,7 @@ def _system_clock() -> Any:
     return _SYSTEM_CLOCK
 
 
-def _resolved(default: Any) -> Any:
+def _resolved(default: object) -> object:
     """Return a filter parameter's default as a call site stores it (the clock made real)."""
     return _system_clock() if default is _DEFAULT_CLOCK else default
 
@@ -114,7 +116,7 @@ def _resolved(default: Any) -> Any:
 # (None: required; _DEFAULT_CLOCK: the system clock). rclpy/rclpy/impl/rcutils_logger.py:
 # Throttle, SkipFirst, Once.
 _DEFAULT_CLOCK = object()
-_FILTER_PARAMETERS: dict[str, dict[str, Any]] = {
+_FILTER_PARAMETERS: dict[str, dict[str, object]] = {
     'throttle': {
         'throttle_duration_sec': None,
         'throttle_time_source_type': _DEFAULT_CLOCK,
@@ -130,7 +132,7 @@ CallerId = tuple[str, str, int, int]
 """``(function name, file path, line number, last bytecode index)`` of a logging call site."""
 
 
-def _detect_filters(options: dict[str, Any]) -> list[str]:
+def _detect_filters(options: Mapping[str, object]) -> list[str]:
     """
     Return the filters requested by ``options``, as rclpy's ``get_filters_from_kwargs``.
 
@@ -164,41 +166,94 @@ def _detect_filters(options: dict[str, Any]) -> list[str]:
     return detected
 
 
+class _Throttle:
+    """rclpy's ``Throttle``: log at most once per ``throttle_duration_sec`` of its clock."""
+
+    def __init__(self, clock: Clock, duration_sec: object) -> None:
+        self.clock = clock
+        self.duration_sec = duration_sec
+        self.last_logged = 0  # rclpy Jazzy: 0 on the chosen clock, so the first call logs
+
+    def should_log(self) -> bool:
+        now = self.clock.now().nanoseconds
+        # the duration is the caller's object, multiplied as rclpy does (any number type)
+        if now < self.last_logged + operator.mul(self.duration_sec, 1e9):
+            return False
+        self.last_logged = now
+        return True
+
+
+class _SkipFirst:
+    """rclpy's ``SkipFirst``: drop the first message of the call site."""
+
+    def __init__(self) -> None:
+        self.skipped = False
+
+    def should_log(self) -> bool:
+        if not self.skipped:
+            self.skipped = True
+            return False
+        return True
+
+
+class _Once:
+    """rclpy's ``Once``: log the first message of the call site only."""
+
+    def __init__(self) -> None:
+        self.logged = False
+
+    def should_log(self) -> bool:
+        if self.logged:
+            return False
+        self.logged = True
+        return True
+
+
+class _CallSite(NamedTuple):
+    """What the first call from a call site fixed, and the state of its filters (rclpy's)."""
+
+    name: object
+    severity: LoggingSeverity
+    filters: list[str]
+    parameters: dict[str, object]
+    states: list[_Throttle | _SkipFirst | _Once]
+
+
 def _new_context(
-    name: str, severity: LoggingSeverity, filters: list[str], options: dict[str, Any]
-) -> dict[str, Any]:
+    name: object, severity: LoggingSeverity, filters: list[str], options: Mapping[str, object]
+) -> _CallSite:
     """Return the state of a new call site (rclpy's ``initialize_context`` of each filter)."""
-    context: dict[str, Any] = {'name': name, 'severity': severity, 'filters': filters}
+    context = _CallSite(name, severity, filters, {}, [])
     for filter_name in filters:
+        parameters = context.parameters
         for param, default in _FILTER_PARAMETERS[filter_name].items():
-            context[param] = options.get(param, _resolved(default))
-            if context[param] is None:
+            parameters[param] = options.get(param, _resolved(default))
+            if parameters[param] is None:
                 msg = (
                     f'Required parameter "{param}" was not specified for logging filter '
                     f'"{_FILTER_CLASS_NAMES[filter_name]}"'
                 )
                 raise TypeError(msg)
         if filter_name == 'throttle':
-            # rclpy Jazzy: the last time starts at 0 on the chosen clock, so the first call
-            # always logs; the time source must be a Clock (system time unless given).
-            context['throttle_last_logged'] = 0
-            source = context['throttle_time_source_type']
+            # the time source must be a Clock (system time unless given)
+            source = parameters['throttle_time_source_type']
             if not isinstance(source, Clock):
                 msg = f'Received throttle_time_source_type of "{source}" is not a clock instance'
                 raise ValueError(msg)
+            context.states.append(_Throttle(source, parameters['throttle_duration_sec']))
         elif filter_name == 'skip_first':
-            context['first_has_been_skipped'] = False
+            context.states.append(_SkipFirst())
         else:
-            context['has_been_logged_once'] = False
+            context.states.append(_Once())
     return context
 
 
 def _check_unchanged(
-    context: dict[str, Any],
-    name: str,
+    context: _CallSite,
+    name: object,
     severity: LoggingSeverity,
     filters: list[str],
-    options: dict[str, Any],
+    options: Mapping[str, object],
 ) -> None:
     """
     Refuse what rclpy refuses at a call site seen before.
@@ -206,42 +261,26 @@ def _check_unchanged(
     :raises ValueError: the severity, ``name=``, the filters or a filter parameter differ from
         the first call made from this call site (rclpy's texts).
     """
-    if severity != context['severity']:
+    if severity != context.severity:
         msg = 'Logger severity cannot be changed between calls.'
         raise ValueError(msg)
-    if name != context['name']:
+    if name != context.name:
         msg = 'Logger name cannot be changed between calls.'
         raise ValueError(msg)
-    if filters != context['filters']:
+    if filters != context.filters:
         msg = 'Requested logging filters cannot be changed between calls.'
         raise ValueError(msg)
     for filter_name in filters:
         params = _FILTER_PARAMETERS[filter_name]
-        if any(context[param] != options.get(param, _resolved(params[param])) for param in params):
+        if any(
+            context.parameters[param] != options.get(param, _resolved(params[param]))
+            for param in params
+        ):
             msg = 'Logging filter parameters cannot be changed between calls.'
             raise ValueError(msg)
 
 
-def _should_log(filter_name: str, context: dict[str, Any]) -> bool:
-    """Apply one filter to a call site's state, updating it as rclpy's ``should_log`` does."""
-    if filter_name == 'throttle':
-        now = context['throttle_time_source_type'].now().nanoseconds
-        if now < context['throttle_last_logged'] + context['throttle_duration_sec'] * 1e9:
-            return False
-        context['throttle_last_logged'] = now
-        return True
-    if filter_name == 'skip_first':
-        if not context['first_has_been_skipped']:
-            context['first_has_been_skipped'] = True
-            return False
-        return True
-    if context['has_been_logged_once']:
-        return False
-    context['has_been_logged_once'] = True
-    return True
-
-
-def _caller_frame() -> Any:
+def _caller_frame() -> FrameType:
     """Return the first frame outside this module (rclpy's ``_find_caller``)."""
     frame = sys._getframe(1)
     while frame.f_back is not None and os.path.realpath(frame.f_code.co_filename) == _THIS_FILE:
@@ -265,7 +304,7 @@ class Logger:
         self.name = name
         self.parent: Logger | None = None
         """The logger this one is a child of (rcl's rosout sublogger), if any."""
-        self._contexts: dict[CallerId, dict[str, Any]] = {}
+        self._contexts: dict[CallerId, _CallSite] = {}
         self._contexts_lock = threading.Lock()
 
     def get_child(self, name: str) -> Logger:
@@ -289,7 +328,7 @@ class Logger:
         """Whether a message of ``severity`` would be printed."""
         return LoggingSeverity(severity) >= self.get_effective_level()
 
-    def log(self, message: Any, severity: LoggingSeverity | int, **kwargs: Any) -> bool:
+    def log(self, message: object, severity: LoggingSeverity | int, **kwargs: object) -> bool:
         """
         Print ``message`` at ``severity`` if enabled and rclpy's filters let it through.
 
@@ -322,8 +361,8 @@ class Logger:
                 self._contexts[caller] = context
             else:
                 _check_unchanged(context, name, severity, filters, kwargs)
-            for filter_name in context['filters']:
-                if not _should_log(filter_name, context):
+            for state in context.states:
+                if not state.should_log():
                     return False
         text, logger_name = c_string(message), c_string(name)
         if text is None or logger_name is None:
@@ -360,25 +399,25 @@ class Logger:
             )  # fmt: skip
         return True
 
-    def debug(self, message: Any, **kwargs: Any) -> bool:
+    def debug(self, message: object, **kwargs: object) -> bool:
         """Log at DEBUG."""
         return self.log(message, LoggingSeverity.DEBUG, **kwargs)
 
-    def info(self, message: Any, **kwargs: Any) -> bool:
+    def info(self, message: object, **kwargs: object) -> bool:
         """Log at INFO."""
         return self.log(message, LoggingSeverity.INFO, **kwargs)
 
-    def warning(self, message: Any, **kwargs: Any) -> bool:
+    def warning(self, message: object, **kwargs: object) -> bool:
         """Log at WARN."""
         return self.log(message, LoggingSeverity.WARN, **kwargs)
 
     warn = warning
 
-    def error(self, message: Any, **kwargs: Any) -> bool:
+    def error(self, message: object, **kwargs: object) -> bool:
         """Log at ERROR."""
         return self.log(message, LoggingSeverity.ERROR, **kwargs)
 
-    def fatal(self, message: Any, **kwargs: Any) -> bool:
+    def fatal(self, message: object, **kwargs: object) -> bool:
         """Log at FATAL."""
         return self.log(message, LoggingSeverity.FATAL, **kwargs)
 

@@ -27,12 +27,16 @@ so that no remote request can stop the node.
 from __future__ import annotations
 
 from array import array
+from collections.abc import Callable
 import contextlib
-from typing import Any
+from typing import Protocol
 import weakref
 
 from tf_demo.msgs import rcl_interfaces
 from tf_demo.transport.dds import wire as dds_wire
+from tf_demo.transport.dds.clock import Clock
+from tf_demo.transport.dds.logging import Logger
+from tf_demo.transport.dds.parameter_store import ParameterStore
 from tf_demo.transport.dds.parameters import Parameter
 from tf_demo.transport.dds.parameters import parameter_from_msg
 from tf_demo.transport.dds.parameters import parameter_to_msg
@@ -45,6 +49,10 @@ from tf_demo.transport.dds.parameters import ParameterUninitializedException
 from tf_demo.transport.dds.parameters import SetParametersResult
 from tf_demo.transport.dds.qos import qos_profile_parameter_events
 from tf_demo.transport.dds.qos import qos_profile_parameters
+from tf_demo.transport.dds.qos import QoSProfile
+from tf_demo.transport.dds.services import RequestT
+from tf_demo.transport.dds.services import ResponseT
+from tf_demo.transport.dds.services import ServiceType
 
 __all__ = [
     'ParameterEventPublisher',
@@ -60,7 +68,36 @@ _SEPARATOR = '.'
 _DEPTH_RECURSIVE = 0
 
 
-def descriptor_to_msg(name: str, descriptor: ParameterDescriptor) -> Any:
+class _InterfacesNode(Protocol):
+    """What the parameter services, the event publisher and ``/rosout`` ask of their node."""
+
+    @property
+    def _parameters(self) -> ParameterStore: ...
+
+    @property
+    def _participant(self) -> dds_wire.DdsParticipant: ...
+
+    def get_name(self) -> str: ...
+
+    def get_fully_qualified_name(self) -> str: ...
+
+    def get_clock(self) -> Clock: ...
+
+    def get_logger(self) -> Logger: ...
+
+    def create_service(
+        self,
+        srv_type: ServiceType[RequestT, ResponseT],
+        srv_name: str,
+        callback: Callable[[RequestT, ResponseT], ResponseT],
+        *,
+        qos_profile: QoSProfile = ...,
+    ) -> object: ...
+
+
+def descriptor_to_msg(
+    name: str, descriptor: ParameterDescriptor
+) -> rcl_interfaces.ParameterDescriptor:
     """Return the ``ParameterDescriptor`` message of a store descriptor."""
     return rcl_interfaces.ParameterDescriptor(
         name=descriptor.name or name,
@@ -124,7 +161,8 @@ def list_parameters(
     return result_names, result_prefixes
 
 
-def _result_msg(result: Any) -> Any:
+def _result_msg(result: SetParametersResult) -> rcl_interfaces.SetParametersResult:
+    # read defensively: an on-set callback may return another world's result class
     return rcl_interfaces.SetParametersResult(
         successful=bool(getattr(result, 'successful', False)),
         reason=str(getattr(result, 'reason', '')),
@@ -134,26 +172,35 @@ def _result_msg(result: Any) -> Any:
 class ParameterService:
     """The six parameter services of one node (rclpy's ``ParameterService``)."""
 
-    def __init__(self, node: Any) -> None:
+    def __init__(self, node: _InterfacesNode) -> None:
         self._store = node._parameters  # no reference to the node: no cycle through it
         name = node.get_name()
-        for srv_type, suffix, callback in (
-            (rcl_interfaces.DescribeParameters, 'describe_parameters', self._describe),
-            (rcl_interfaces.GetParameters, 'get_parameters', self._get),
-            (rcl_interfaces.GetParameterTypes, 'get_parameter_types', self._get_types),
-            (rcl_interfaces.ListParameters, 'list_parameters', self._list),
-            (rcl_interfaces.SetParameters, 'set_parameters', self._set),
-            (
-                rcl_interfaces.SetParametersAtomically,
-                'set_parameters_atomically',
-                self._set_atomically,
-            ),
-        ):
+
+        def offer(
+            srv_type: ServiceType[RequestT, ResponseT],
+            suffix: str,
+            callback: Callable[[RequestT, ResponseT], ResponseT],
+        ) -> None:
             node.create_service(
                 srv_type, f'{name}/{suffix}', callback, qos_profile=qos_profile_parameters
             )
 
-    def _describe(self, request: Any, response: Any) -> Any:
+        offer(rcl_interfaces.DescribeParameters, 'describe_parameters', self._describe)
+        offer(rcl_interfaces.GetParameters, 'get_parameters', self._get)
+        offer(rcl_interfaces.GetParameterTypes, 'get_parameter_types', self._get_types)
+        offer(rcl_interfaces.ListParameters, 'list_parameters', self._list)
+        offer(rcl_interfaces.SetParameters, 'set_parameters', self._set)
+        offer(
+            rcl_interfaces.SetParametersAtomically,
+            'set_parameters_atomically',
+            self._set_atomically,
+        )
+
+    def _describe(
+        self,
+        request: rcl_interfaces.DescribeParameters_Request,
+        response: rcl_interfaces.DescribeParameters_Response,
+    ) -> rcl_interfaces.DescribeParameters_Response:
         for name in request.names:
             try:
                 descriptor = self._store.describe_parameter(name)
@@ -163,7 +210,11 @@ class ParameterService:
             response.descriptors.append(descriptor_to_msg(name, descriptor))
         return response
 
-    def _get(self, request: Any, response: Any) -> Any:
+    def _get(
+        self,
+        request: rcl_interfaces.GetParameters_Request,
+        response: rcl_interfaces.GetParameters_Response,
+    ) -> rcl_interfaces.GetParameters_Response:
         for name in request.names:
             try:
                 parameter = self._store.get_parameter(name)
@@ -173,7 +224,11 @@ class ParameterService:
             response.values.append(parameter_value_to_msg(parameter))
         return response
 
-    def _get_types(self, request: Any, response: Any) -> Any:
+    def _get_types(
+        self,
+        request: rcl_interfaces.GetParameterTypes_Request,
+        response: rcl_interfaces.GetParameterTypes_Response,
+    ) -> rcl_interfaces.GetParameterTypes_Response:
         types = []
         for name in request.names:
             try:
@@ -186,7 +241,11 @@ class ParameterService:
         response.types = array('B', types)
         return response
 
-    def _list(self, request: Any, response: Any) -> Any:
+    def _list(
+        self,
+        request: rcl_interfaces.ListParameters_Request,
+        response: rcl_interfaces.ListParameters_Response,
+    ) -> rcl_interfaces.ListParameters_Response:
         names: list[str] = []
         prefixes: list[str] = []
         with contextlib.suppress(TypeError, ValueError):
@@ -196,7 +255,7 @@ class ParameterService:
         response.result = rcl_interfaces.ListParametersResult(names=names, prefixes=prefixes)
         return response
 
-    def _set_one_list(self, messages: list[Any]) -> Any:
+    def _set_one_list(self, messages: list[rcl_interfaces.Parameter]) -> SetParametersResult:
         try:
             parameters = [parameter_from_msg(message) for message in messages]
             return self._store.set_parameters_atomically(parameters)
@@ -205,11 +264,19 @@ class ParameterService:
         except (TypeError, ValueError) as error:
             return SetParametersResult(successful=False, reason=f'invalid parameter: {error}')
 
-    def _set(self, request: Any, response: Any) -> Any:
+    def _set(
+        self,
+        request: rcl_interfaces.SetParameters_Request,
+        response: rcl_interfaces.SetParameters_Response,
+    ) -> rcl_interfaces.SetParameters_Response:
         response.results = [_result_msg(self._set_one_list([p])) for p in request.parameters]
         return response
 
-    def _set_atomically(self, request: Any, response: Any) -> Any:
+    def _set_atomically(
+        self,
+        request: rcl_interfaces.SetParametersAtomically_Request,
+        response: rcl_interfaces.SetParametersAtomically_Response,
+    ) -> rcl_interfaces.SetParametersAtomically_Response:
         response.result = _result_msg(self._set_one_list(list(request.parameters)))
         return response
 
@@ -217,7 +284,7 @@ class ParameterService:
 class ParameterEventPublisher:
     """Publishes the node's ``/parameter_events`` (fed by the parameter store's event sink)."""
 
-    def __init__(self, node: Any) -> None:
+    def __init__(self, node: _InterfacesNode) -> None:
         self._clock = node.get_clock()
         self._node_name = node.get_fully_qualified_name()
         message_type = rcl_interfaces.ParameterEvent
@@ -261,7 +328,11 @@ class NodeInterfaces:
     """
 
     def __init__(
-        self, node: Any, *, enable_rosout: bool = True, start_parameter_services: bool = True
+        self,
+        node: _InterfacesNode,
+        *,
+        enable_rosout: bool = True,
+        start_parameter_services: bool = True,
     ) -> None:
         from tf_demo.transport.dds.rosout import RosoutPublisher
 

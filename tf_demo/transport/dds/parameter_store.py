@@ -26,7 +26,6 @@ from collections.abc import Iterable
 from collections.abc import Mapping
 from collections.abc import Sequence
 import threading
-from typing import Any
 import warnings
 
 from tf_demo.transport.dds.parameters import check_floating_point_range
@@ -107,7 +106,7 @@ class ParameterStore:
     def declare_parameter(
         self,
         name: str,
-        value: Any = None,
+        value: object = None,
         descriptor: ParameterDescriptor | None = None,
         ignore_override: bool = False,
     ) -> Parameter:
@@ -125,7 +124,7 @@ class ParameterStore:
         :raises ValueError: for a static parameter with no type (rclpy's texts).
         """
         if value is None and descriptor is None:
-            entry: tuple[Any, ...] = (name,)
+            entry: tuple[object, ...] = (name,)
         else:
             entry = (name, value, descriptor if descriptor is not None else ParameterDescriptor())
         return self.declare_parameters('', [entry], ignore_override)[0]
@@ -133,7 +132,7 @@ class ParameterStore:
     def declare_parameters(
         self,
         namespace: str,
-        parameters: Sequence[Sequence[Any]],
+        parameters: Sequence[Sequence[object]],
         ignore_override: bool = False,
     ) -> list[Parameter]:
         """Declare several parameters: tuples of ``(name[, value or type[, descriptor]])``."""
@@ -163,7 +162,7 @@ class ParameterStore:
                 )
                 raise TypeError(msg)
             descriptor = ParameterDescriptor(**vars(given))
-            value: Any = None
+            value: object = None
             if len(entry) == 1:
                 warnings.warn(
                     f"when declaring parameter named '{name}', "

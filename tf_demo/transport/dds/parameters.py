@@ -80,7 +80,7 @@ class ParameterType(Enum):
         return f'Type.{self.name}'
 
     @classmethod
-    def from_parameter_value(cls, parameter_value: Any) -> ParameterType:
+    def from_parameter_value(cls, parameter_value: object) -> ParameterType:
         """
         Return the type rclpy infers for ``parameter_value``.
 
@@ -105,7 +105,7 @@ class ParameterType(Enum):
         msg = f"The given value is not one of the allowed types '{parameter_value}'."
         raise TypeError(msg)
 
-    def check(self, parameter_value: Any) -> bool:
+    def check(self, parameter_value: object) -> bool:
         """
         Whether ``parameter_value`` can be held by a parameter of this type (rclpy's rule).
 
@@ -120,7 +120,7 @@ class ParameterType(Enum):
         element = _ARRAY_ELEMENT_TYPES[self]
         numeric = self in (ParameterType.INTEGER_ARRAY, ParameterType.DOUBLE_ARRAY)
         if isinstance(parameter_value, array.array) and numeric:
-            items: Iterable[Any] = parameter_value
+            items: Iterable[object] = parameter_value
         elif isinstance(parameter_value, (list, tuple)):
             items = parameter_value
         else:
@@ -155,7 +155,9 @@ class Parameter:
 
     Type = ParameterType
 
-    def __init__(self, name: str, type_: ParameterType | None = None, value: Any = None) -> None:
+    def __init__(
+        self, name: str, type_: ParameterType | None = None, value: object = None
+    ) -> None:
         if type_ is None:
             type_ = ParameterType.from_parameter_value(value)
         if not isinstance(type_, ParameterType):
@@ -180,19 +182,24 @@ class Parameter:
 
     @property
     def value(self) -> Any:
-        """The parameter's value (``None`` when NOT_SET)."""
+        """
+        The parameter's value (``None`` when NOT_SET).
+
+        Typed as rclpy (Jazzy) types it, not at all: its type is :attr:`type_`'s, which the
+        declaration fixes, so the caller knows it (a union would make every reader narrow it).
+        """
         return self._value
 
-    def get_parameter_value(self) -> Any:
+    def get_parameter_value(self) -> rcl_interfaces.ParameterValue:
         """Return the value as an ``rcl_interfaces/msg/ParameterValue`` (``.string_value``...)."""
         return parameter_value_to_msg(self)
 
-    def to_parameter_msg(self) -> Any:
+    def to_parameter_msg(self) -> rcl_interfaces.Parameter:
         """Return the ``rcl_interfaces/msg/Parameter`` of this parameter."""
         return parameter_to_msg(self)
 
     @classmethod
-    def from_parameter_msg(cls, param_msg: Any) -> Parameter:
+    def from_parameter_msg(cls, param_msg: rcl_interfaces.Parameter) -> Parameter:
         """Return the parameter a ``rcl_interfaces/msg/Parameter`` carries."""
         return parameter_from_msg(param_msg)
 
@@ -214,7 +221,7 @@ _VALUE_FIELDS = {
 }
 
 
-def parameter_value_to_msg(parameter: Parameter) -> Any:
+def parameter_value_to_msg(parameter: Parameter) -> rcl_interfaces.ParameterValue:
     """Return the ``ParameterValue`` message of ``parameter`` (rclpy's get_parameter_value)."""
     message = rcl_interfaces.ParameterValue(type=parameter.type_.value)
     field = _VALUE_FIELDS.get(parameter.type_)
@@ -230,12 +237,12 @@ def parameter_value_to_msg(parameter: Parameter) -> Any:
     return message
 
 
-def parameter_to_msg(parameter: Parameter) -> Any:
+def parameter_to_msg(parameter: Parameter) -> rcl_interfaces.Parameter:
     """Return the ``rcl_interfaces/msg/Parameter`` of ``parameter``."""
     return rcl_interfaces.Parameter(name=parameter.name, value=parameter_value_to_msg(parameter))
 
 
-def parameter_from_msg(message: Any) -> Parameter:
+def parameter_from_msg(message: rcl_interfaces.Parameter) -> Parameter:
     """
     Return the parameter a ``rcl_interfaces/msg/Parameter`` carries (rclpy's from_parameter_msg).
 
@@ -335,7 +342,7 @@ class InvalidParameterTypeException(ParameterException):
 class InvalidParameterValueException(ParameterException):
     """A value was rejected by an on-set callback or by the descriptor."""
 
-    def __init__(self, parameter: str, value: Any, reason: str) -> None:
+    def __init__(self, parameter: str, value: object, reason: str) -> None:
         super().__init__(
             f'Invalid parameter value ({value}) for parameter. Reason: {reason}', parameter
         )

@@ -17,17 +17,21 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
 from typing import Protocol
+from typing import TYPE_CHECKING
 import weakref
 
 from tf_demo.msgs import rosgraph_msgs
 from tf_demo.transport.dds.clock import ROSClock
+from tf_demo.transport.dds.logging import Logger
 from tf_demo.transport.dds.parameters import Parameter
 from tf_demo.transport.dds.parameters import SetParametersResult
 from tf_demo.transport.dds.qos import QoSProfile
 from tf_demo.transport.dds.qos import ReliabilityPolicy
 from tf_demo.transport.dds.time import Time
+
+if TYPE_CHECKING:  # the ROS world imports this module without cyclonedds (endpoints need it)
+    from tf_demo.transport.dds.endpoints import DdsSubscription
 
 __all__ = ['CLOCK_TOPIC', 'USE_SIM_TIME_NAME', 'TimeSource']
 
@@ -40,19 +44,25 @@ class _TimeSourceNode(Protocol):
 
     def has_parameter(self, name: str) -> bool: ...
 
-    def declare_parameter(self, name: str, value: Any = None) -> Any: ...
+    def declare_parameter(self, name: str, value: object = None) -> Parameter: ...
 
-    def get_parameter(self, name: str) -> Any: ...
+    def get_parameter(self, name: str) -> Parameter: ...
 
     def add_on_set_parameters_callback(
         self, callback: Callable[[list[Parameter]], SetParametersResult]
     ) -> None: ...
 
-    def create_subscription(self, msg_type: Any, topic: str, callback: Any, qos: Any) -> Any: ...
+    def create_subscription(
+        self,
+        msg_type: type[rosgraph_msgs.Clock],
+        topic: str,
+        callback: Callable[[rosgraph_msgs.Clock], None],
+        qos_profile: QoSProfile,
+    ) -> DdsSubscription: ...
 
-    def destroy_subscription(self, subscription: Any) -> Any: ...
+    def destroy_subscription(self, subscription: DdsSubscription) -> bool: ...
 
-    def get_logger(self) -> Any: ...
+    def get_logger(self) -> Logger: ...
 
 
 class TimeSource:
@@ -65,8 +75,8 @@ class TimeSource:
     """
 
     def __init__(self, *, node: _TimeSourceNode | None = None) -> None:
-        self._node_ref: weakref.ReferenceType[Any] | None = None
-        self._clock_subscription: Any = None
+        self._node_ref: weakref.ReferenceType[_TimeSourceNode] | None = None
+        self._clock_subscription: DdsSubscription | None = None
         self._clocks: weakref.WeakSet[ROSClock] = weakref.WeakSet()
         self._last_time_set: Time | None = None
         self._ros_time_is_active = False
@@ -93,7 +103,7 @@ class TimeSource:
                 node.destroy_subscription(self._clock_subscription)
             self._clock_subscription = None
 
-    def _node(self) -> Any:
+    def _node(self) -> _TimeSourceNode | None:
         return self._node_ref() if self._node_ref is not None else None
 
     def _subscribe_to_clock_topic(self) -> None:
@@ -140,7 +150,7 @@ class TimeSource:
         clock._set_ros_time_is_active(self._ros_time_is_active)
         self._clocks.add(clock)
 
-    def clock_callback(self, msg: Any) -> None:
+    def clock_callback(self, msg: rosgraph_msgs.Clock) -> None:
         """Take the time of one ``rosgraph_msgs/msg/Clock`` message."""
         now = Time.from_msg(msg.clock)
         self._last_time_set = now
