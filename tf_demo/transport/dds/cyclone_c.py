@@ -25,8 +25,10 @@ from __future__ import annotations
 import ctypes
 import itertools
 from typing import Any
+from typing import TypeAlias
 
 from cyclonedds.core import Listener as _CycloneListener
+from cyclonedds.idl import IdlStruct
 from cyclonedds.idl import make_idl_struct
 from cyclonedds.idl import types as idl_types
 from cyclonedds.internal import DDS
@@ -46,12 +48,21 @@ __all__ = [
     'lib',
     'matched_handles',
     'placeholder_type',
+    'type_information',
     'withdraw_type_information',
 ]
 
-lib: Any = DDS._dll_handle
-CQos: Any = _CycloneCQos
-Listener: Any = _CycloneListener
+Untyped: TypeAlias = Any
+"""
+cyclonedds-python's classes whose methods carry no annotations (the type checker would refuse
+every call into them): named through this alias, the one place the standalone world gives up
+static types.
+"""
+
+lib = DDS._dll_handle
+"""Cyclone's C library (``ctypes.CDLL``): the functions below get their ctypes signatures."""
+CQos: Untyped = _CycloneCQos
+Listener: Untyped = _CycloneListener
 
 
 class _Guid(ctypes.Structure):
@@ -68,7 +79,9 @@ class PublicationMatched(ctypes.Structure):
     ]
 
 
-def _declare(name: str, restype: Any, *argtypes: Any) -> None:
+def _declare(
+    name: str, restype: type[ctypes._CData] | None, *argtypes: type[ctypes._CData]
+) -> None:
     function = getattr(lib, name)
     function.restype = restype
     function.argtypes = list(argtypes)
@@ -128,14 +141,22 @@ def entity_guid(handle: int) -> bytes:
     return bytes(guid.v)
 
 
-def placeholder_type(type_name: str) -> Any:
+def placeholder_type(type_name: str) -> type[IdlStruct]:
     """Build a fresh one-octet IDL struct named ``type_name`` (its layout stays local)."""
-    placeholder: Any = make_idl_struct(
+    placeholder = make_idl_struct(
         f'Placeholder{next(_placeholder_ids)}', type_name, {'opaque': idl_types.uint8}
     )
-    placeholder.__idl__.populate()
-    placeholder.__idl__.fill_type_data()
+    idl: Untyped = placeholder.__idl__
+    idl.populate()
+    idl.fill_type_data()
     return placeholder
+
+
+def type_information(placeholder: type[IdlStruct]) -> bytes:
+    """Return the serialized XTypes TypeInformation of a :func:`placeholder_type`."""
+    idl: Untyped = placeholder.__idl__
+    information: bytes = idl._xt_bytedata[0]
+    return information
 
 
 def withdraw_type_information(topic: int, type_information: bytes) -> None:

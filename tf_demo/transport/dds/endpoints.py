@@ -91,7 +91,7 @@ def _as_profile(qos_or_depth: QoSProfile | int) -> QoSProfile:
     """
     Return the profile of ``qos_or_depth`` (an int is a KEEP_LAST depth).
 
-    Any object with rclpy's profile attributes passes as a profile (a user's rclpy profile).
+    An object with rclpy's profile attributes passes as a profile (a user's rclpy profile).
     """
     if isinstance(qos_or_depth, bool):
         msg = f'qos_profile must be a QoSProfile or a history depth, got {qos_or_depth!r}'

@@ -30,9 +30,9 @@ import atexit
 from collections.abc import Callable
 from collections.abc import Mapping
 import contextlib
+import ctypes
 import os
 import threading
-from typing import Any
 
 from cyclonedds import _clayer
 from cyclonedds.builtin import BuiltinDataReader
@@ -53,6 +53,7 @@ from tf_demo.transport.dds.cyclone_c import entity_guid
 from tf_demo.transport.dds.cyclone_c import lib
 from tf_demo.transport.dds.cyclone_c import Listener
 from tf_demo.transport.dds.cyclone_c import placeholder_type
+from tf_demo.transport.dds.cyclone_c import type_information
 from tf_demo.transport.dds.cyclone_c import withdraw_type_information
 from tf_demo.transport.dds.raw_endpoints import RawReader
 from tf_demo.transport.dds.raw_endpoints import RawWriter
@@ -103,7 +104,7 @@ class DdsParticipant:
         self._lock = threading.Lock()
         self._topics: dict[str, tuple[int, str]] = {}
         self._listeners: dict[int, Listener] = {}
-        self._builtin_readers: dict[bool, tuple[Any, Any]] = {}
+        self._builtin_readers: dict[bool, tuple[BuiltinDataReader, ReadCondition]] = {}
         self._closed = False
 
     def topic(self, dds_topic: str, type_name: str) -> int:
@@ -123,7 +124,7 @@ class DdsParticipant:
                 self.handle, dds_topic, placeholder, None, None
             )
             check(handle, f'creating DDS topic {dds_topic!r} of type {type_name!r}')
-            withdraw_type_information(handle, placeholder.__idl__._xt_bytedata[0])
+            withdraw_type_information(handle, type_information(placeholder))
             self._topics[dds_topic] = (handle, type_name)
             return handle
 
@@ -134,7 +135,7 @@ class DdsParticipant:
             return None
         handler = on_incompatible_qos
 
-        def report(_entity: object, status: Any) -> None:
+        def report(_entity: object, status: ctypes.Structure) -> None:
             # Never let a failing log call escape into Cyclone's listener thread.
             with contextlib.suppress(Exception):
                 handler(incompatible_policy_name(int(status.last_policy_id)))

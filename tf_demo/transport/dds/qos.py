@@ -23,9 +23,13 @@ from __future__ import annotations
 
 from enum import Enum
 from enum import IntEnum
-from typing import Any
+from typing import TYPE_CHECKING
+from typing import TypedDict
 
 from tf_demo.transport.dds.time import Duration
+
+if TYPE_CHECKING:  # typing.Unpack is Python 3.11's; only the type checker reads it here
+    from typing_extensions import Unpack
 
 __all__ = [
     'DurabilityPolicy',
@@ -125,17 +129,21 @@ class InvalidQoSProfileException(Exception):  # noqa: N818 - rclpy's name
         Exception.__init__(self, 'Invalid QoSProfile', *args)
 
 
-_PROFILE_FIELDS = (
-    'history',
-    'depth',
-    'reliability',
-    'durability',
-    'lifespan',
-    'deadline',
-    'liveliness',
-    'liveliness_lease_duration',
-    'avoid_ros_namespace_conventions',
-)
+class _ProfileFields(TypedDict, total=False):
+    """The keyword arguments of :class:`QoSProfile` (rclpy's ``**kwargs``), in rclpy's order."""
+
+    history: HistoryPolicy | int
+    depth: int
+    reliability: ReliabilityPolicy | int
+    durability: DurabilityPolicy | int
+    lifespan: Duration
+    deadline: Duration
+    liveliness: LivelinessPolicy | int
+    liveliness_lease_duration: Duration
+    avoid_ros_namespace_conventions: bool
+
+
+_PROFILE_FIELDS = tuple(_ProfileFields.__annotations__)
 
 
 class QoSProfile:
@@ -158,7 +166,7 @@ class QoSProfile:
     _liveliness_lease_duration: Duration
     _avoid_ros_namespace_conventions: bool
 
-    def __init__(self, **kwargs: Any) -> None:
+    def __init__(self, **kwargs: Unpack[_ProfileFields]) -> None:
         if set(kwargs) - set(_PROFILE_FIELDS):
             # rclpy Jazzy asserts this (an AssertionError with this text)
             msg = f'Invalid arguments passed to constructor: {kwargs.keys()!r}'

@@ -23,13 +23,12 @@ CDR bytes produced by ``tf_demo.msgs.cdr`` and readers hand back the received by
 from __future__ import annotations
 
 import ctypes
-from typing import Any
-from typing import cast
 from typing import Protocol
 
 from cyclonedds import _clayer
 from cyclonedds.builtin_types import cqos_to_qos
 from cyclonedds.builtin_types import endpoint_constructor
+from cyclonedds.internal import SampleInfo
 from tf_demo.transport.dds.cyclone_c import ANY_STATE
 from tf_demo.transport.dds.cyclone_c import check
 from tf_demo.transport.dds.cyclone_c import entity_guid
@@ -119,7 +118,7 @@ class RawReader(_RawEndpoint):
             if info.valid_data
         ]
 
-    def _take(self, max_samples: int) -> list[tuple[bytes, Any]]:
+    def _take(self, max_samples: int) -> list[tuple[bytes, SampleInfo]]:
         """Take up to ``max_samples`` ``(payload, sample_info)`` pairs; none once closed."""
         if self.handle <= 0:
             return []
@@ -129,7 +128,8 @@ class RawReader(_RawEndpoint):
                 msg = f'dds_take failed (DDS return code {samples})'
                 raise DdsWireError(msg)
             return []
-        return cast('list[tuple[bytes, Any]]', samples)
+        taken: list[tuple[bytes, SampleInfo]] = samples  # what ddspy_take returns (untyped C)
+        return taken
 
     def publisher_gid(self, publication_handle: int) -> bytes:
         """Return the 16-byte GUID of the matched writer behind ``publication_handle``."""

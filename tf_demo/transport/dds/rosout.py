@@ -26,7 +26,6 @@ level (10..50), logger name, text, file, function and line.
 from __future__ import annotations
 
 import threading
-from typing import Any
 
 from tf_demo.msgs import builtin_interfaces
 from tf_demo.msgs import cdr
@@ -44,7 +43,7 @@ _lock = threading.Lock()
 _publishers: dict[str, list[RosoutPublisher]] = {}
 
 
-def log_message(record: LogRecord) -> Any:
+def log_message(record: LogRecord) -> rcl_interfaces.Log:
     """Return the ``rcl_interfaces/msg/Log`` rcl publishes for ``record``."""
     sec, nanosec = divmod(record.stamp_ns, 1_000_000_000)
     return rcl_interfaces.Log(

@@ -27,9 +27,10 @@ from __future__ import annotations
 import itertools
 import struct
 import threading
-from typing import Any
+from typing import TypeVar
 
 from tf_demo.msgs import cdr
+from tf_demo.msgs._message import Message
 
 __all__ = [
     'RequestHeader',
@@ -42,6 +43,7 @@ __all__ = [
 ]
 
 _HEADER = {1: struct.Struct('<Qq'), 0: struct.Struct('>Qq')}
+_MessageT = TypeVar('_MessageT', bound=Message)
 _HEADER_SIZE = 4 + 16
 
 
@@ -65,13 +67,13 @@ class RequestHeader(tuple[int, int]):
         return self[1]
 
 
-def encode_sample(header: RequestHeader, message: Any) -> bytes:
+def encode_sample(header: RequestHeader, message: Message) -> bytes:
     """Serialize ``message`` with rmw_cyclonedds' request header after the encapsulation."""
     payload = cdr.serialize(message)
     return payload[:4] + _HEADER[1].pack(header.guid, header.sequence_number) + payload[4:]
 
 
-def decode_sample(msg_type: Any, data: bytes) -> tuple[RequestHeader, Any]:
+def decode_sample(msg_type: type[_MessageT], data: bytes) -> tuple[RequestHeader, _MessageT]:
     """
     Split a request or reply sample into its header and decoded message.
 

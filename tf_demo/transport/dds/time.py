@@ -24,9 +24,10 @@ world uses rclpy's own (:mod:`tf_demo.transport.clock` chooses).
 from __future__ import annotations
 
 from enum import IntEnum
-from typing import Any
+from typing import overload
 
 from tf_demo.msgs import builtin_interfaces
+from tf_demo.msgs.convert import StampLike
 
 __all__ = ['S_TO_NS', 'ClockChange', 'ClockType', 'Duration', 'Infinite', 'Time']
 
@@ -110,13 +111,13 @@ class Duration:
 
     __hash__ = None  # type: ignore[assignment]  # rclpy's Duration is unhashable too
 
-    def to_msg(self) -> Any:
+    def to_msg(self) -> builtin_interfaces.Duration:
         """Return a ``builtin_interfaces/msg/Duration`` message (``sec`` from divmod)."""
         sec, nanosec = divmod(self._nanoseconds, S_TO_NS)
         return builtin_interfaces.Duration(sec=sec, nanosec=nanosec)
 
     @classmethod
-    def from_msg(cls, msg: Any) -> Duration:
+    def from_msg(cls, msg: StampLike) -> Duration:
         """Build a Duration from a ``builtin_interfaces/msg/Duration`` (either world's class)."""
         if not _looks_like_stamp(msg):
             msg_text = 'Must pass a builtin_interfaces.msg.Duration object'
@@ -198,7 +199,13 @@ class Time:
     def __radd__(self, other: object) -> Time:
         return self.__add__(other)
 
-    def __sub__(self, other: object) -> Any:
+    @overload
+    def __sub__(self, other: Time) -> Duration: ...
+
+    @overload
+    def __sub__(self, other: Duration) -> Time: ...
+
+    def __sub__(self, other: object) -> Duration | Time:
         if isinstance(other, Time):
             if self._clock_type != other._clock_type:
                 msg = "Can't subtract times with different clock types"
@@ -257,13 +264,13 @@ class Time:
 
     __hash__ = None  # type: ignore[assignment]  # rclpy's Time is unhashable too
 
-    def to_msg(self) -> Any:
+    def to_msg(self) -> builtin_interfaces.Time:
         """Return a ``builtin_interfaces/msg/Time`` message."""
         sec, nanosec = self.seconds_nanoseconds()
         return builtin_interfaces.Time(sec=sec, nanosec=nanosec)
 
     @classmethod
-    def from_msg(cls, msg: Any, clock_type: ClockType = ClockType.ROS_TIME) -> Time:
+    def from_msg(cls, msg: StampLike, clock_type: ClockType = ClockType.ROS_TIME) -> Time:
         """Build a Time from a ``builtin_interfaces/msg/Time`` (either world's class)."""
         if not _looks_like_stamp(msg):
             text = 'Must pass a builtin_interfaces.msg.Time object'

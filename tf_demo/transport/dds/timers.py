@@ -18,7 +18,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 import threading
-from typing import Any
 
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
@@ -36,7 +35,7 @@ class DdsTimer:
 
     def __init__(
         self,
-        callback: Callable[[], Any],
+        callback: Callable[[], object],
         period_ns: int,
         clock: Clock,
         *,

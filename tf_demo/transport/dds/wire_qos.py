@@ -25,8 +25,10 @@ from __future__ import annotations
 from typing import Any
 from typing import NamedTuple
 
+from cyclonedds.qos import BasePolicy
 from cyclonedds.qos import Policy
 from cyclonedds.qos import Qos
+from tf_demo.transport.dds.qos import QoSProfile
 
 __all__ = [
     'DDS_INFINITY',
@@ -57,7 +59,12 @@ class EndpointQos(NamedTuple):
 
 
 def _duration_ns(value: Any) -> int | None:
-    """Nanoseconds of a ROS duration (rclpy-like ``Duration``), None when unspecified (0)."""
+    """
+    Nanoseconds of a ROS duration, None when unspecified (0).
+
+    ``value`` is what a duck-typed profile holds, untyped: an rclpy-like ``Duration``
+    (``nanoseconds``), a ``Duration`` message (``sec``, ``nanosec``) or nanoseconds (``int()``).
+    """
     if value is None:
         return None
     nanoseconds = getattr(value, 'nanoseconds', None)
@@ -75,14 +82,14 @@ def _duration_ns(value: Any) -> int | None:
     return nanoseconds
 
 
-def _policy_name(value: Any) -> str:
+def _policy_name(value: object) -> str:
     name = getattr(value, 'name', None)
     return str(name if name is not None else value).upper()
 
 
-def endpoint_qos_from_profile(profile: Any) -> EndpointQos:
+def endpoint_qos_from_profile(profile: QoSProfile) -> EndpointQos:
     """
-    Resolve an rclpy-like ``QoSProfile`` (policies with rclpy's enum names) as rmw_cyclonedds.
+    Resolve a ``QoSProfile`` (or an rclpy-like one: policies with rclpy's enum names, duck-typed).
 
     SYSTEM_DEFAULT reliability, durability and history become RELIABLE, VOLATILE and KEEP_LAST;
     depth 0 becomes 1; zero durations mean "unspecified" (infinite).
@@ -128,7 +135,7 @@ def cyclone_qos(qos: EndpointQos, user_data: bytes, *, ignore_local: bool = Fals
     and ``user_data`` (``typehash=RIHS01_...;``).
     """
     history = Policy.History.KeepAll if qos.keep_all else Policy.History.KeepLast(qos.depth)
-    policies: list[Any] = [
+    policies: list[BasePolicy] = [
         history,
         Policy.Reliability.Reliable(DDS_INFINITY)
         if qos.reliable
