@@ -29,6 +29,7 @@ import weakref
 from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.graph import _Graph
 from tf_demo.transport.dds.graph import GraphNode
+from tf_demo.transport.dds.logging import get_logger
 
 
 class _LiveNode(GraphNode, Protocol):
@@ -130,8 +131,6 @@ def _participant() -> dds_wire.DdsParticipant:
 
 
 def _warn_process(text: str) -> None:
-    from tf_demo.transport.dds.logging import get_logger
-
     get_logger('tf_demo.dds').warning(text)
 
 

@@ -27,7 +27,9 @@ from typing import TypedDict
 from typing import TypeVar
 import weakref
 
+from tf_demo.msgs import cdr
 from tf_demo.msgs._message import Message
+from tf_demo.msgs.log_throttle import PerWriterThrottle
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
 from tf_demo.transport.dds.logging import Logger
@@ -135,8 +137,6 @@ class DdsPublisher(Generic[MsgT]):
         self.topic_name = topic
         self.qos_profile = qos_profile
         self._writer = writer
-        from tf_demo.msgs import cdr
-
         self._serialize = cdr.serialize
 
     @property
@@ -231,9 +231,6 @@ class DdsSubscription:
         self.qos_profile = qos_profile
         self.raw = raw
         self._reader = reader
-        from tf_demo.msgs import cdr
-        from tf_demo.msgs.log_throttle import PerWriterThrottle
-
         self._deserialize = cdr.deserialize
         self._decode_error = cdr.CdrError
         self._malformed = PerWriterThrottle('malformed samples')

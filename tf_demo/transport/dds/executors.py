@@ -24,7 +24,6 @@ import inspect
 import threading
 import time
 from typing import Protocol
-from typing import TYPE_CHECKING
 from typing import TypeAlias
 
 from tf_demo.transport.dds import wire as dds_wire
@@ -33,13 +32,10 @@ from tf_demo.transport.dds.clock import ROSClock
 from tf_demo.transport.dds.context import _context
 from tf_demo.transport.dds.context import _participant
 from tf_demo.transport.dds.endpoints import MessageInfo
+from tf_demo.transport.dds.node import DdsNode
 from tf_demo.transport.dds.tasks import DdsTask
 from tf_demo.transport.dds.tasks import TaskHandler
 from tf_demo.transport.dds.timers import DdsTimer
-
-if TYPE_CHECKING:
-    from tf_demo.transport.dds.node import DdsNode
-
 
 _IDLE_WAIT_NS = 200_000_000
 _TASK_POLL_NS = 5_000_000

@@ -20,6 +20,8 @@ from collections.abc import Iterable
 import threading
 from typing import Protocol
 
+from tf_demo.msgs import cdr
+from tf_demo.msgs import rmw_dds_common
 from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.endpoints import _FLUSH_TIMEOUT_NS
 
@@ -40,8 +42,6 @@ class _Graph:
     """Publishes this process' nodes and their endpoints on ``ros_discovery_info``."""
 
     def __init__(self, participant: dds_wire.DdsParticipant) -> None:
-        from tf_demo.msgs import rmw_dds_common
-
         self._messages = rmw_dds_common
         self._participant = participant
         info_type = rmw_dds_common.ParticipantEntitiesInfo
@@ -54,8 +54,6 @@ class _Graph:
         self._lock = threading.Lock()
 
     def publish(self, nodes: Iterable[GraphNode]) -> None:
-        from tf_demo.msgs import cdr
-
         messages = self._messages
         entries = [
             messages.NodeEntitiesInfo(

@@ -29,6 +29,7 @@ from typing import Any
 from typing import Protocol
 import weakref
 
+from tf_demo.transport import ros_args
 from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
@@ -38,11 +39,14 @@ from tf_demo.transport.dds.context import _graph_changed
 from tf_demo.transport.dds.context import _participant
 from tf_demo.transport.dds.endpoints import AnyPublisher
 from tf_demo.transport.dds.endpoints import DdsSubscription
+from tf_demo.transport.dds.logging import get_logger
 from tf_demo.transport.dds.names import validate_namespace
 from tf_demo.transport.dds.names import validate_node_name
 from tf_demo.transport.dds.node_endpoints import NodeEndpointsMixin
 from tf_demo.transport.dds.node_parameters import NodeParametersMixin
 from tf_demo.transport.dds.node_services import NodeServicesMixin
+from tf_demo.transport.dds.parameter_services import NodeInterfaces
+from tf_demo.transport.dds.parameter_store import ParameterStore
 from tf_demo.transport.dds.parameters import Parameter
 from tf_demo.transport.dds.services import AnyClient
 from tf_demo.transport.dds.services import AnyService
@@ -101,11 +105,6 @@ class DdsNode(NodeParametersMixin, NodeServicesMixin, NodeEndpointsMixin):
         enable_logger_service: bool = False,
     ) -> None:
         del context, enable_logger_service
-        from tf_demo.transport import ros_args
-        from tf_demo.transport.dds.logging import get_logger
-        from tf_demo.transport.dds.parameter_services import NodeInterfaces
-        from tf_demo.transport.dds.parameter_store import ParameterStore
-
         if not _context.ok():
             msg = (
                 'the standalone world is not initialised (or was shut down): call '

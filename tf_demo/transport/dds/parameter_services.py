@@ -32,6 +32,8 @@ import contextlib
 from typing import Protocol
 import weakref
 
+from tf_demo.msgs import builtin_interfaces
+from tf_demo.msgs import cdr
 from tf_demo.msgs import rcl_interfaces
 from tf_demo.transport.dds import wire as dds_wire
 from tf_demo.transport.dds.clock import Clock
@@ -50,6 +52,7 @@ from tf_demo.transport.dds.parameters import SetParametersResult
 from tf_demo.transport.dds.qos import qos_profile_parameter_events
 from tf_demo.transport.dds.qos import qos_profile_parameters
 from tf_demo.transport.dds.qos import QoSProfile
+from tf_demo.transport.dds.rosout import RosoutPublisher
 from tf_demo.transport.dds.services import RequestT
 from tf_demo.transport.dds.services import ResponseT
 from tf_demo.transport.dds.services import ServiceType
@@ -294,8 +297,6 @@ class ParameterEventPublisher:
             dds_wire.endpoint_qos_from_profile(qos_profile_parameter_events),
             f'typehash={message_type.__typehash__};'.encode(),
         )
-        from tf_demo.msgs import cdr
-
         self._serialize = cdr.serialize
 
     def publish(
@@ -303,8 +304,6 @@ class ParameterEventPublisher:
     ) -> None:
         """Publish one event, stamped with the node's clock."""
         sec, nanosec = divmod(int(self._clock.now().nanoseconds), 1_000_000_000)
-        from tf_demo.msgs import builtin_interfaces
-
         event = rcl_interfaces.ParameterEvent(
             stamp=builtin_interfaces.Time(sec=sec, nanosec=nanosec),
             node=self._node_name,
@@ -334,8 +333,6 @@ class NodeInterfaces:
         enable_rosout: bool = True,
         start_parameter_services: bool = True,
     ) -> None:
-        from tf_demo.transport.dds.rosout import RosoutPublisher
-
         self.events = ParameterEventPublisher(node)
         self.rosout: RosoutPublisher | None = None
         try:

@@ -17,16 +17,12 @@
 from __future__ import annotations
 
 import threading
-from typing import TYPE_CHECKING
 
 from tf_demo.transport.dds.context import _context
 from tf_demo.transport.dds.executors import Completable
 from tf_demo.transport.dds.executors import DdsExecutor
 from tf_demo.transport.dds.executors import SingleThreadedExecutor
-
-if TYPE_CHECKING:
-    from tf_demo.transport.dds.node import DdsNode
-
+from tf_demo.transport.dds.node import DdsNode
 
 _default_executors: dict[int, DdsExecutor] = {}
 
