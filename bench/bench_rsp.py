@@ -40,10 +40,10 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from tf_demo.core.math3d import matrix_from_quat  # noqa: E402
+from tf_demo.msgs.cdr import TfMessageEncoder  # noqa: E402
 from tf_demo.nodes.robot_state_publisher import JointStateThrottle  # noqa: E402
 from tf_demo.nodes.robot_state_publisher import positions_from_joint_state  # noqa: E402
 from tf_demo.nodes.robot_state_publisher import publish_interval_ns  # noqa: E402
-from tf_demo.nodes.robot_state_publisher import TfMessageEncoder  # noqa: E402
 from tf_demo.testing.urdf_strategies import pinocchio_link_poses  # noqa: E402
 from tf_demo.testing.urdf_strategies import random_positions  # noqa: E402
 from tf_demo.urdf import RobotModel  # noqa: E402

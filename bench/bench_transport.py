@@ -85,14 +85,14 @@ def run_sink(args: argparse.Namespace) -> None:
     latencies_us: list[float] = []
     first_cpu = first_wall = last_cpu = last_wall = 0.0
 
-    def on_message(msg: tf2_msgs.TFMessage) -> None:
+    def on_message(msg: tf2_msgs.TFMessage | bytes) -> None:  # bytes: the listener's raw /tf
         nonlocal received, first_cpu, first_wall, last_cpu, last_wall
         if received == 0:
             first_cpu, first_wall = cpu_seconds(), time.monotonic()
         received += 1
         if received % 100 == 0:
             last_cpu, last_wall = cpu_seconds(), time.monotonic()
-        if args.latency:
+        if args.latency and isinstance(msg, tf2_msgs.TFMessage):  # never with --listener
             stamp = msg.transforms[0].header.stamp
             sent_ns = stamp.sec * 1_000_000_000 + stamp.nanosec
             latencies_us.append((time.time_ns() - sent_ns) / 1000.0)
@@ -104,6 +104,7 @@ def run_sink(args: argparse.Namespace) -> None:
         buffer = Buffer(node=node)
         listener = TransformListener(buffer, node, tf_topic=TOPIC)
         subscription = listener.tf_sub
+        assert subscription is not None  # the listener subscribes /tf when it is created
         insert = subscription.callback
 
         def insert_and_count(msg: bytes, info: dict[str, object]) -> None:
