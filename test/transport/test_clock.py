@@ -27,6 +27,7 @@ from tf_demo.transport.clock import Infinite
 from tf_demo.transport.clock import JumpThreshold
 from tf_demo.transport.clock import ROSClock
 from tf_demo.transport.clock import Time
+from tf_demo.transport.clock import TimeJump
 from tf_demo.transport.clock import TimeSource
 from tf_demo.transport.messages import builtin_interfaces
 
@@ -94,9 +95,9 @@ def test_times_of_different_clock_types_do_not_mix() -> None:
 def test_time_and_duration_refuse_foreign_operands() -> None:
     """Arithmetic with ints raises TypeError and equality with other types is False."""
     with pytest.raises(TypeError):
-        _ = Time(seconds=1) + 1  # type: ignore[operator]
+        _ = Time(seconds=1) + 1
     with pytest.raises(TypeError):
-        _ = Duration(seconds=1) < 1  # type: ignore[operator]
+        _ = Duration(seconds=1) < 1
     assert Duration(seconds=1) != 1_000_000_000
     assert Time(seconds=1) != 1_000_000_000
 
@@ -160,9 +161,9 @@ def test_jump_callbacks_fire_as_rcl_fires_them() -> None:
     """Activation fires on_clock_change callbacks; overrides fire past the thresholds only."""
     clock = ROSClock()
     source = sim_time_source(clock)
-    changes: list = []
-    backward: list = []
-    pre_calls: list = []
+    changes: list[TimeJump] = []
+    backward: list[TimeJump] = []
+    pre_calls: list[int] = []
     # Keep every handle: under rclpy a dropped JumpHandle leaves rcl a dangling callback.
     changes_handle = clock.create_jump_callback(
         JumpThreshold(min_forward=None, min_backward=None, on_clock_change=True),

@@ -31,6 +31,7 @@ from tf_demo.msgs import rosgraph_msgs
 from tf_demo.msgs import std_msgs
 from tf_demo.msgs import tf2_msgs
 from tf_demo.transport import dds_backend
+from tf_demo.transport.dds.endpoints import MessageInfo
 from tf_demo.transport.parameters import Parameter
 from tf_demo.transport.qos import QoSProfile
 from tf_demo.transport.qos import ReliabilityPolicy
@@ -189,9 +190,9 @@ def test_publish_rejects_the_wrong_message_type(world):
     node = dds_backend.DdsNode('strict')
     publisher = node.create_publisher(tf2_msgs.TFMessage, '/tf', 10)
     with pytest.raises(TypeError, match='Expected TFMessage, got String'):
-        publisher.publish(std_msgs.String(data='x'))
+        publisher.publish(std_msgs.String(data='x'))  # type: ignore[arg-type]  # refused
     with pytest.raises(TypeError, match='QoSProfile or a history depth'):
-        node.create_publisher(tf2_msgs.TFMessage, '/tf', 'reliable')
+        node.create_publisher(tf2_msgs.TFMessage, '/tf', 'reliable')  # type: ignore[arg-type]
 
 
 @pytest.mark.dds
@@ -266,7 +267,7 @@ def test_destroyed_node_refuses_new_entities(world):
 def test_two_argument_callbacks_get_message_info_with_the_publisher_gid(world):
     """A (msg, info) callback gets rclpy's MessageInfo keys and the sending writer's GUID."""
     node = dds_backend.DdsNode('informed')
-    infos: list[dict] = []
+    infos: list[MessageInfo] = []
     node.create_subscription(tf2_msgs.TFMessage, '/tf', lambda _msg, info: infos.append(info), 10)
     first = node.create_publisher(tf2_msgs.TFMessage, '/tf', 10)
     second = dds_backend.DdsNode('other').create_publisher(tf2_msgs.TFMessage, '/tf', 10)

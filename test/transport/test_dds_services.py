@@ -271,7 +271,7 @@ def test_a_client_calls_a_server_in_the_same_process(world: None) -> None:
         assert wait_for(lambda: all(f.done() for f in futures))
         assert [f.result().values[0].string_value for f in futures] == [str(i) for i in range(5)]
         with pytest.raises(TypeError):
-            client.call_async(rcl_interfaces.SetParameters.Request())
+            client.call_async(rcl_interfaces.SetParameters.Request())  # type: ignore[arg-type]
         assert server_node.destroy_service(service)
         assert wait_for(lambda: not client.service_is_ready())
     finally:

@@ -27,6 +27,7 @@ pytest.importorskip('cyclonedds', reason=STANDALONE_ONLY)
 from cyclonedds.builtin import BuiltinDataReader
 from cyclonedds.builtin import BuiltinTopicDcpsPublication
 from cyclonedds.builtin import BuiltinTopicDcpsSubscription
+from cyclonedds.builtin_types import DcpsEndpoint
 from cyclonedds.qos import Policy
 from tf_demo.msgs import cdr
 from tf_demo.msgs import tf2_msgs
@@ -239,7 +240,7 @@ def wire(dds_env: dict[str, str]) -> Iterator[dds_wire.DdsParticipant]:
     dds_wire.close_participant()
 
 
-def _discovered(reader: BuiltinDataReader, topic: str) -> list[object]:
+def _discovered(reader: BuiltinDataReader, topic: str) -> list[DcpsEndpoint]:
     deadline = time.monotonic() + 10
     while time.monotonic() < deadline:
         found = [s for s in reader.read(N=1000) if s.topic_name == topic]

@@ -215,9 +215,8 @@ def test_multi_threaded_mutually_exclusive_group_never_overlaps(
 
         return on_timer
 
-    extra = {} if group is None else {'callback_group': group}
     for name in ('first', 'second'):
-        timers[name] = node.create_timer(0.05, make_callback(name), **extra)
+        timers[name] = node.create_timer(0.05, make_callback(name), callback_group=group)
     expected_group = node.default_callback_group if group is None else group
     assert all(expected_group.has_entity(timer) for timer in timers.values())
     executor = multi_threaded(executors, node)

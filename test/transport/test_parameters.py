@@ -276,7 +276,7 @@ def test_node_takes_overrides_from_init_and_its_own_arguments(
         )
         assert node.declare_parameter('rate', 0.5).value == 2.0
         assert node.declare_parameter('frame', 'base').value == 'map'
-        rejected = []
+        rejected: list[str] = []
 
         def reject_all(parameters: list[Parameter]) -> SetParametersResult:
             rejected.extend(p.name for p in parameters)

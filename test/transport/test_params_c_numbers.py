@@ -22,6 +22,7 @@ compare value, length and ``ERANGE``.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 import ctypes
 import ctypes.util
 import math
@@ -127,7 +128,7 @@ HEXES = st.builds(
 )
 
 
-def _libc_strtod():
+def _libc_strtod() -> Callable[..., float]:
     """Return glibc's strtod through ctypes, or skip where the C library is not glibc."""
     if platform.libc_ver()[0] != 'glibc':
         pytest.skip('the oracle is glibc')
@@ -145,7 +146,9 @@ def _glibc(text: str) -> CDouble | None:
     ctypes.set_errno(0)
     value = strtod(data, ctypes.byref(end))
     errno = ctypes.get_errno()
-    length = ctypes.cast(end, ctypes.c_void_p).value - ctypes.addressof(data)
+    end_address = ctypes.cast(end, ctypes.c_void_p).value
+    assert end_address is not None  # strtod always sets the end pointer
+    length = end_address - ctypes.addressof(data)
     if length == 0:
         return None
     return CDouble(value, length, errno == ERANGE)

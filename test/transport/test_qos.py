@@ -38,13 +38,16 @@ def test_policy_values_match_rmw() -> None:
         1,
         2,
     ]
-    assert ReliabilityPolicy.RELIABLE == 1
-    assert ReliabilityPolicy.BEST_EFFORT == 2
-    assert ReliabilityPolicy.BEST_AVAILABLE == 4
-    assert DurabilityPolicy.TRANSIENT_LOCAL == 1
-    assert DurabilityPolicy.VOLATILE == 2
-    assert LivelinessPolicy.AUTOMATIC == 1
-    assert LivelinessPolicy.MANUAL_BY_TOPIC == 3
+    # As lists, like the history policies: mypy takes an IntEnum member and an int literal
+    # compared alone for two literal types that can never be equal.
+    reliability = [
+        ReliabilityPolicy.RELIABLE,
+        ReliabilityPolicy.BEST_EFFORT,
+        ReliabilityPolicy.BEST_AVAILABLE,
+    ]
+    assert reliability == [1, 2, 4]
+    assert [DurabilityPolicy.TRANSIENT_LOCAL, DurabilityPolicy.VOLATILE] == [1, 2]
+    assert [LivelinessPolicy.AUTOMATIC, LivelinessPolicy.MANUAL_BY_TOPIC] == [1, 3]
     assert ReliabilityPolicy.get_from_short_key('best_effort') == 2
     assert DurabilityPolicy.TRANSIENT_LOCAL.short_key == 'transient_local'
 

@@ -730,28 +730,30 @@ def test_field_checker_rejects_what_rclpys_generated_setters_reject() -> None:
     from tf_demo.msgs import sensor_msgs
     from tf_demo.msgs import std_msgs
 
+    # Wrong types on purpose (the type: ignores): the checker's refusal is what is tested.
     rejected = [
         geometry_msgs.Vector3(x=1),
         geometry_msgs.Vector3(y=np.float32(1.0)),
         geometry_msgs.Point32(z=1e39),
-        builtin_interfaces.Time(sec=1.0),
+        builtin_interfaces.Time(sec=1.0),  # type: ignore[arg-type]
         builtin_interfaces.Time(nanosec=-1),
         builtin_interfaces.Time(sec=np.int64(3)),
-        std_msgs.Header(frame_id=None),
+        std_msgs.Header(frame_id=None),  # type: ignore[arg-type]
         sensor_msgs.JointState(position=[1, 2]),
-        sensor_msgs.JointState(position=np.array([1.0, 2.0])),
+        sensor_msgs.JointState(position=np.array([1.0, 2.0])),  # type: ignore[arg-type]
         sensor_msgs.JointState(velocity=array.array('f', [1.0])),
-        sensor_msgs.JointState(name='joint'),
+        sensor_msgs.JointState(name='joint'),  # type: ignore[arg-type]
         geometry_msgs.PoseWithCovariance(covariance=[0.0] * 35),
         geometry_msgs.PoseWithCovariance(covariance=np.zeros(36, dtype=np.float32)),
-        geometry_msgs.TransformStamped(header=geometry_msgs.Vector3()),
+        geometry_msgs.TransformStamped(header=geometry_msgs.Vector3()),  # type: ignore[arg-type]
     ]
     for msg in rejected:
         assert rclpy_field_violations(msg), repr(msg)
     accepted = [
         geometry_msgs.Vector3(x=1.0, y=np.float64(2.0), z=float('inf')),
         builtin_interfaces.Time(sec=-5, nanosec=999_999_999),
-        sensor_msgs.JointState(name=('a',), position=array.array('d', [1.0]), velocity=[2.0]),
+        # rclpy takes any sequence of str for a string sequence; the generated class says list.
+        sensor_msgs.JointState(name=('a',), position=array.array('d', [1.0]), velocity=[2.0]),  # type: ignore[arg-type]
         geometry_msgs.PoseWithCovariance(covariance=[0.0] * 36),
         geometry_msgs.PoseWithCovariance(covariance=np.zeros(36)),
     ]
@@ -836,11 +838,11 @@ ROBOT_URDF = """<robot name="r">
 """
 
 
+@pytest.mark.standalone  # under rclpy, rsp builds rclpy's own messages (their setters check)
 def test_robot_state_publisher_messages_are_rclpy_valid_and_raw_bytes_are_bytes() -> None:
     """RSP's transforms (integer-looking URDF values) pass rclpy's checks; raw /tf is bytes."""
     from tf_demo.msgs import builtin_interfaces
     from tf_demo.msgs import cdr
-    from tf_demo.msgs import geometry_msgs
     from tf_demo.msgs import tf2_msgs
     from tf_demo.nodes import robot_state_publisher as rsp
     from tf_demo.urdf import RobotModel
@@ -848,10 +850,10 @@ def test_robot_state_publisher_messages_are_rclpy_valid_and_raw_bytes_are_bytes(
     model = RobotModel.from_string(ROBOT_URDF)
     stamp = builtin_interfaces.Time(sec=4, nanosec=5)
     transforms = model.static_transforms() + model.joint_transforms({'rev': 1})
-    messages = [rsp._transform_stamped(geometry_msgs, stamp, t) for t in transforms]
+    messages = [rsp._transform_stamped(stamp, t) for t in transforms]
     tf_message = tf2_msgs.TFMessage(transforms=messages)
     assert rclpy_field_violations(tf_message) == []
-    encoded = rsp.TfMessageEncoder('').encode(transforms, 4, 5)
+    encoded = cdr.TfMessageEncoder('').encode(transforms, 4, 5)
     assert type(encoded) is bytes  # rclpy's Publisher.publish takes bytes only (publish_raw)
     assert cdr.deserialize(tf2_msgs.TFMessage, encoded) == tf_message
 
@@ -1188,11 +1190,12 @@ def test_tutorial_nodes_publish_rclpy_valid_messages(published: list[Any], tmp_p
     from tf_demo.nodes.frame_broadcaster import FrameBroadcaster
     from tf_demo.nodes.odom_tf_broadcaster import OdomTfBroadcaster
     from tf_demo.nodes.static_tf_pub import StaticTfPublisher
+    from tf_demo.transport.node import Node
     from tf_demo.transport.parameters import Parameter
 
     urdf = tmp_path / 'robot.urdf'
     urdf.write_text(ROBOT_URDF, encoding='utf-8')
-    nodes = [StaticTfPublisher()]
+    nodes: list[Node] = [StaticTfPublisher()]
     dynamic = DynamicTfPublisher()
     frame = FrameBroadcaster()
     odom = OdomTfBroadcaster()

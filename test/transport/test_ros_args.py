@@ -163,7 +163,7 @@ PANDA_URDF = REPO_ROOT.parent / 'shared' / 'robots' / 'panda.urdf'
 
 
 def _override_rules() -> list[object]:
-    rules = [
+    rules: list[object] = [
         pytest.param(['-p', 'qos_overrides./tf_static.publisher.depth:=3'], id='slash-name'),
         pytest.param(['-p', 'a.b/c.d:=x'], id='dots'),
     ]

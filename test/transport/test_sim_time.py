@@ -14,6 +14,9 @@
 
 """use_sim_time: a /clock publisher over real DDS drives node.get_clock().now()."""
 
+from __future__ import annotations
+
+from collections.abc import Callable
 from pathlib import Path
 import signal
 import subprocess
@@ -24,6 +27,7 @@ import pytest
 from tf_demo import transport
 from tf_demo.transport.clock import ClockType
 from tf_demo.transport.clock import Time
+from tf_demo.transport.executors import Executor
 from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import builtin_interfaces
 from tf_demo.transport.messages import rosgraph_msgs
@@ -33,7 +37,12 @@ from tf_demo.transport.parameters import Parameter
 pytestmark = pytest.mark.dds
 
 
-def spin_until(executor, condition, publish=None, limit_s: float = 20.0) -> bool:
+def spin_until(
+    executor: Executor,
+    condition: Callable[[], bool],
+    publish: Callable[[], object] | None = None,
+    limit_s: float = 20.0,
+) -> bool:
     """Spin (publishing /clock each round) until condition() holds or the limit passes."""
     deadline = time.monotonic() + limit_s
     while time.monotonic() < deadline:
