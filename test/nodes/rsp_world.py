@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 from typing import NamedTuple
@@ -64,13 +65,19 @@ def joint_state(names: list[str], positions: list[float], stamp_ns: int) -> Any:
     return message
 
 
-def add_rsp(nodes: Spinning, xml: str, *, reliable_input: bool = True, **parameters: Any) -> Any:
-    """A robot_state_publisher node in this process on ``xml``, spun with ``nodes``."""
+def add_rsp(
+    nodes: Spinning,
+    xml: str,
+    *,
+    reliable_input: bool = True,
+    parameters: Mapping[str, object] | None = None,
+) -> Any:
+    """A robot_state_publisher node in this process on ``xml`` and ``parameters``, spun."""
     from tf_demo.nodes.robot_state_publisher import RobotStatePublisher
     from tf_demo.transport.parameters import Parameter
 
     overrides = [Parameter('robot_description', value=xml)]
-    values = {**(reliable_joint_states(100) if reliable_input else {}), **parameters}
+    values = {**(reliable_joint_states(100) if reliable_input else {}), **(parameters or {})}
     overrides += [Parameter(name, value=value) for name, value in values.items()]
     return nodes.add(RobotStatePublisher((), parameter_overrides=overrides))
 

@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from functools import partial
 import math
 from pathlib import Path
 import random
@@ -60,7 +61,7 @@ def assert_buffer_matches_pinocchio(
     root = prefix + model.root
     for link in reachable:
         wait_until(
-            lambda link=link: buffer.can_transform(root, prefix + link, stamp_ns),
+            partial(buffer.can_transform, root, prefix + link, stamp_ns),
             what=f'{root} -> {prefix + link}',
         )
         result = buffer.lookup_transform(root, prefix + link, stamp_ns).transform
@@ -353,7 +354,7 @@ def test_backward_sim_time_jump_resets_the_throttle(nodes: Spinning, capfd: Any)
     from tf_demo.transport.qos import QoSProfile
 
     model = RobotModel.from_file(SAMPLES / 'example_revolute.urdf')
-    rsp = add_rsp(nodes, model.xml, use_sim_time=True)
+    rsp = add_rsp(nodes, model.xml, parameters={'use_sim_time': True})
     client = feed(nodes, 'sim_clock')
     clock = client.node.create_publisher(rosgraph_msgs.Clock, '/clock', QoSProfile(depth=10))
     start_connected(nodes, client)
@@ -417,7 +418,7 @@ def test_qos_overrides_parameters_change_the_profiles(nodes: Spinning) -> None:
     rsp = add_rsp(
         nodes,
         RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml,
-        **{
+        parameters={
             'qos_overrides./tf.publisher.depth': 7,
             'qos_overrides./tf.publisher.durability': 'transient_local',
             'qos_overrides./tf_static.publisher.history': 'keep_all',
@@ -434,5 +435,5 @@ def test_qos_overrides_parameters_change_the_profiles(nodes: Spinning) -> None:
         add_rsp(
             nodes,
             RobotModel.from_file(SAMPLES / 'example_fixed.urdf').xml,
-            **{'qos_overrides./tf.publisher.reliability': 'sometimes'},
+            parameters={'qos_overrides./tf.publisher.reliability': 'sometimes'},
         )

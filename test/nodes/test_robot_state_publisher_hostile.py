@@ -195,11 +195,12 @@ def test_a_mimic_of_a_missing_joint_loads_and_publishes_as_upstream(
             "joint 'j' mimics joint 'ghost', which does not exist", timeout=60, anywhere=True
         )
         for publisher in publishers:
-            wait_until(
-                lambda publisher=publisher: publisher.get_subscription_count() >= 1,
-                timeout=60,
-                what='a robot_state_publisher subscription',
-            )
+
+            def subscribed(publisher: Any = publisher) -> bool:
+                count: int = publisher.get_subscription_count()
+                return count >= 1
+
+            wait_until(subscribed, timeout=60, what='a robot_state_publisher subscription')
             publisher.publish(joint_state(['j', 'ghost'], [math.pi / 2, 1.0], 2000 * SECOND))
         children = {'b'} | ({'upstream/b'} if upstream_wanted else set())
 

@@ -44,6 +44,7 @@ orders, the TFMessage whole-message layouts, the tf fast path and the reference 
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 from collections.abc import Iterator
 import json
 import struct
@@ -57,7 +58,9 @@ from ros_world.jazzy import standalone_env
 from ros_world.jazzy import standalone_python
 from ros_world.jazzy import started
 from tf_demo.msgs import cdr
+from tf_demo.msgs._message import Message
 from tf_demo.msgs._reference import reference_deserialize
+from tf_demo.msgs.std_msgs import String
 
 #: A message the real stack drops (rclpy's callback never sees it).
 DROPPED = None
@@ -137,13 +140,20 @@ def tf_message(
     return _finish(data)
 
 
+def _string_data(message: Message) -> str:
+    """The ``data`` of ``message``, a std_msgs/String."""
+    assert isinstance(message, String)
+    return message.data
+
+
 def _decoded_string(data: bytes) -> dict[str, Any]:
     """What each decoder of std_msgs/String gives for ``data``: the string or DROPPED."""
     results: dict[str, Any] = {}
-    for name, decode in (
-        ('deserialize', lambda: cdr.deserialize('std_msgs/msg/String', data).data),
-        ('reference', lambda: reference_deserialize('std_msgs/msg/String', data).data),
-    ):
+    decoders: tuple[tuple[str, Callable[[], object]], ...] = (
+        ('deserialize', lambda: _string_data(cdr.deserialize('std_msgs/msg/String', data))),
+        ('reference', lambda: _string_data(reference_deserialize('std_msgs/msg/String', data))),
+    )
+    for name, decode in decoders:
         try:
             results[name] = decode()
         except cdr.CdrError:
@@ -158,11 +168,12 @@ def _frames(message: Any) -> list[tuple[str, str]]:
 def _decoded_tf(data: bytes) -> dict[str, Any]:
     """What each TFMessage decoder gives for ``data``: the (parent, child) list or DROPPED."""
     results: dict[str, Any] = {}
-    for name, decode in (
+    decoders: tuple[tuple[str, Callable[[], object]], ...] = (
         ('deserialize', lambda: _frames(cdr.deserialize('tf2_msgs/msg/TFMessage', data))),
         ('reference', lambda: _frames(reference_deserialize('tf2_msgs/msg/TFMessage', data))),
         ('tf fast path', lambda: [t[:2] for t in cdr.decode_tf_message_transforms(data)]),
-    ):
+    )
+    for name, decode in decoders:
         try:
             results[name] = decode()
         except cdr.CdrError:

@@ -31,6 +31,7 @@ from collections.abc import Callable
 from collections.abc import Iterator
 from collections.abc import Sequence
 import contextlib
+from functools import partial
 import math
 from pathlib import Path
 import re
@@ -270,7 +271,7 @@ def both_echoes(env: dict[str, str], *args: str) -> Iterator[tuple[ProcessOutput
 def until_each(condition: Callable[[ProcessOutput], object], *outputs: ProcessOutput) -> None:
     """Wait (60 s at most) until ``condition`` holds for each of ``outputs``, else fail."""
     for output in outputs:
-        assert eventually(lambda o=output: condition(o), 60.0), (output.stdout, output.stderr)
+        assert eventually(partial(condition, output), 60.0), (output.stdout, output.stderr)
 
 
 ECHO_BLOCK_LINES = 11
@@ -390,7 +391,10 @@ def test_tf_echo_puts_the_same_nodes_in_the_graph_as_tf2_echo(tf2_ros_cpp: dict[
                     if n != 'sbs_echo_probe'
                 )
 
-            eventually(lambda names=names: 'tf2_echo' in names(), 30.0)
+            def echo_listed(names: Callable[[], list[str]] = names) -> bool:
+                return 'tf2_echo' in names()
+
+            eventually(echo_listed, 30.0)
             time.sleep(2.0)  # let the rest of the tool's graph show
             nodes[name] = names()
     assert 'tf2_echo' in nodes['theirs']
@@ -795,7 +799,8 @@ OUR_RSP = ours_run('robot_state_publisher')
 def movable_joints(urdf: str) -> tuple[list[str], list[str]]:
     """(movable joints without mimic, mimic joints) of a URDF, in document order."""
     root = ElementTree.fromstring(urdf)
-    free, mimics = [], []
+    free: list[str] = []
+    mimics: list[str] = []
     for joint in root.iter('joint'):
         if joint.get('type') not in {'revolute', 'continuous', 'prismatic'}:
             continue
