@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 import threading
+from typing import Protocol
 from typing import TypeVar
 
 from tf_demo.transport.dds import wire as dds_wire
@@ -30,12 +31,22 @@ from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.clock import Clock
 from tf_demo.transport.dds.clock import ROSClock
 from tf_demo.transport.dds.context import _context
+from tf_demo.transport.dds.context import _graph_changed
 from tf_demo.transport.dds.logging import Logger
 from tf_demo.transport.dds.names import expand_topic_name
 
 __all__ = ['NodeBase']
 
 _EntityT = TypeVar('_EntityT')
+
+
+class _ReaderEntity(Protocol):
+    """A subscription, service or client: served from a read condition, closed when destroyed."""
+
+    def _close(self) -> None: ...
+
+
+_ReaderEntityT = TypeVar('_ReaderEntityT', bound=_ReaderEntity)
 
 
 class NodeBase:
@@ -114,6 +125,27 @@ class NodeBase:
             if entity not in entities:
                 return False
             entities.remove(entity)
+        return True
+
+    def _add_reader_entity(
+        self, entities: list[_ReaderEntityT], entity: _ReaderEntityT, group: CallbackGroup
+    ) -> None:
+        """Register a new subscription, service or client with its group, executors and graph."""
+        group.add_entity(entity)
+        with self._lock:
+            entities.append(entity)
+        self._wake_executors()
+        _graph_changed()
+
+    def _destroy_reader_entity(
+        self, entities: list[_ReaderEntityT], entity: _ReaderEntityT
+    ) -> bool:
+        """Destroy a subscription, service or client of the node; False when it is not one."""
+        if not self._detach(entities, entity):
+            return False
+        self._wake_executors()
+        entity._close()
+        _graph_changed()
         return True
 
     def _wake_executors(self) -> None:

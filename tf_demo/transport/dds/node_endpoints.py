@@ -180,11 +180,7 @@ class NodeEndpointsMixin(NodeBase):
             raw=raw,
             callback_group=group,
         )
-        group.add_entity(subscription)
-        with self._lock:
-            self._subscriptions.append(subscription)
-        self._wake_executors()
-        _graph_changed()
+        self._add_reader_entity(self._subscriptions, subscription, group)
         return subscription
 
     def create_timer(
@@ -238,12 +234,7 @@ class NodeEndpointsMixin(NodeBase):
 
     def destroy_subscription(self, subscription: DdsSubscription) -> bool:
         """Destroy ``subscription``."""
-        if not self._detach(self._subscriptions, subscription):
-            return False
-        self._wake_executors()
-        subscription._close()
-        _graph_changed()
-        return True
+        return self._destroy_reader_entity(self._subscriptions, subscription)
 
     def destroy_timer(self, timer: DdsTimer) -> bool:
         """Destroy ``timer``."""

@@ -19,7 +19,6 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from tf_demo.transport.dds.callback_groups import CallbackGroup
-from tf_demo.transport.dds.context import _graph_changed
 from tf_demo.transport.dds.node_base import NodeBase
 from tf_demo.transport.dds.qos import qos_profile_services_default
 from tf_demo.transport.dds.qos import QoSProfile
@@ -66,11 +65,7 @@ class NodeServicesMixin(NodeBase):
             qos_profile,
             group,
         )
-        group.add_entity(service)
-        with self._lock:
-            self._services.append(service)
-        self._wake_executors()
-        _graph_changed()
+        self._add_reader_entity(self._services, service, group)
         return service
 
     def create_client(
@@ -86,30 +81,16 @@ class NodeServicesMixin(NodeBase):
         group = callback_group or self._default_callback_group
         name = self.resolve_topic_name(srv_name)
         client = DdsClient(self, srv_type, name, qos_profile, group)
-        group.add_entity(client)
-        with self._lock:
-            self._clients.append(client)
-        self._wake_executors()
-        _graph_changed()
+        self._add_reader_entity(self._clients, client, group)
         return client
 
     def destroy_service(self, service: DdsService[RequestT, ResponseT]) -> bool:
         """Destroy ``service``."""
-        if not self._detach(self._services, service):
-            return False
-        self._wake_executors()
-        service._close()
-        _graph_changed()
-        return True
+        return self._destroy_reader_entity(self._services, service)
 
     def destroy_client(self, client: DdsClient[RequestT, ResponseT]) -> bool:
         """Destroy ``client`` (its pending futures are cancelled)."""
-        if not self._detach(self._clients, client):
-            return False
-        self._wake_executors()
-        client._close()
-        _graph_changed()
-        return True
+        return self._destroy_reader_entity(self._clients, client)
 
     @property
     def services(self) -> list[AnyService]:

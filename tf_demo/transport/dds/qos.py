@@ -327,6 +327,18 @@ def validate_qos_or_depth(qos_or_depth: QoSProfile | int) -> QoSProfile:
     raise TypeError(msg)
 
 
+def _keep_last(
+    depth: int, reliability: ReliabilityPolicy, durability: DurabilityPolicy
+) -> QoSProfile:
+    """Return a KEEP_LAST ``depth`` profile (rmw's presets but three)."""
+    return QoSProfile(
+        history=HistoryPolicy.KEEP_LAST,
+        depth=depth,
+        reliability=reliability,
+        durability=durability,
+    )
+
+
 qos_profile_unknown = QoSProfile(
     history=HistoryPolicy.UNKNOWN,
     depth=0,
@@ -334,41 +346,20 @@ qos_profile_unknown = QoSProfile(
     durability=DurabilityPolicy.UNKNOWN,
     liveliness=LivelinessPolicy.UNKNOWN,
 )
-qos_profile_default = QoSProfile(
-    history=HistoryPolicy.KEEP_LAST,
-    depth=10,
-    reliability=ReliabilityPolicy.RELIABLE,
-    durability=DurabilityPolicy.VOLATILE,
-)
+qos_profile_default = _keep_last(10, ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE)
 qos_profile_system_default = QoSProfile(
     history=HistoryPolicy.SYSTEM_DEFAULT,
     depth=0,
     reliability=ReliabilityPolicy.SYSTEM_DEFAULT,
     durability=DurabilityPolicy.SYSTEM_DEFAULT,
 )
-qos_profile_sensor_data = QoSProfile(
-    history=HistoryPolicy.KEEP_LAST,
-    depth=5,
-    reliability=ReliabilityPolicy.BEST_EFFORT,
-    durability=DurabilityPolicy.VOLATILE,
+qos_profile_sensor_data = _keep_last(5, ReliabilityPolicy.BEST_EFFORT, DurabilityPolicy.VOLATILE)
+qos_profile_services_default = _keep_last(
+    10, ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE
 )
-qos_profile_services_default = QoSProfile(
-    history=HistoryPolicy.KEEP_LAST,
-    depth=10,
-    reliability=ReliabilityPolicy.RELIABLE,
-    durability=DurabilityPolicy.VOLATILE,
-)
-qos_profile_parameters = QoSProfile(
-    history=HistoryPolicy.KEEP_LAST,
-    depth=1000,
-    reliability=ReliabilityPolicy.RELIABLE,
-    durability=DurabilityPolicy.VOLATILE,
-)
-qos_profile_parameter_events = QoSProfile(
-    history=HistoryPolicy.KEEP_LAST,
-    depth=1000,
-    reliability=ReliabilityPolicy.RELIABLE,
-    durability=DurabilityPolicy.VOLATILE,
+qos_profile_parameters = _keep_last(1000, ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE)
+qos_profile_parameter_events = _keep_last(
+    1000, ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE
 )
 qos_profile_rosout_default = QoSProfile(
     history=HistoryPolicy.KEEP_LAST,
@@ -377,12 +368,8 @@ qos_profile_rosout_default = QoSProfile(
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
     lifespan=Duration(seconds=10),
 )
-
-qos_profile_action_status_default = QoSProfile(
-    history=HistoryPolicy.KEEP_LAST,
-    depth=1,
-    reliability=ReliabilityPolicy.RELIABLE,
-    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+qos_profile_action_status_default = _keep_last(
+    1, ReliabilityPolicy.RELIABLE, DurabilityPolicy.TRANSIENT_LOCAL
 )
 
 # rmw's RMW_QOS_DEADLINE_BEST_AVAILABLE and RMW_QOS_LIVELINESS_LEASE_DURATION_BEST_AVAILABLE.
