@@ -77,9 +77,9 @@ def test_history_or_depth_is_required() -> None:
 def test_bad_fields_are_rejected_with_their_name() -> None:
     """Unknown keywords and wrong types fail as rclpy's asserts; bad policies name the value."""
     with pytest.raises(AssertionError, match='Invalid arguments passed to constructor'):
-        QoSProfile(depth=1, reliabilty=ReliabilityPolicy.RELIABLE)
+        QoSProfile(depth=1, reliabilty=ReliabilityPolicy.RELIABLE)  # type: ignore[call-arg]
     with pytest.raises(AssertionError):  # rclpy asserts the type
-        QoSProfile(depth=1, deadline=1.0)
+        QoSProfile(depth=1, deadline=1.0)  # type: ignore[arg-type]
     assert QoSProfile(depth=-1).depth == -1  # rclpy keeps it; rmw refuses it at creation
     with pytest.raises(ValueError):
         QoSProfile(depth=1, reliability=9)
