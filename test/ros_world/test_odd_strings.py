@@ -146,39 +146,40 @@ def _string_data(message: Message) -> str:
     return message.data
 
 
-def _decoded_string(data: bytes) -> dict[str, Any]:
-    """What each decoder of std_msgs/String gives for ``data``: the string or DROPPED."""
-    results: dict[str, Any] = {}
-    decoders: tuple[tuple[str, Callable[[], object]], ...] = (
-        ('deserialize', lambda: _string_data(cdr.deserialize('std_msgs/msg/String', data))),
-        ('reference', lambda: _string_data(reference_deserialize('std_msgs/msg/String', data))),
-    )
-    for name, decode in decoders:
+def _outcomes(decoders: dict[str, Callable[[], object]]) -> dict[str, object]:
+    """What each decoder gives: its result, or DROPPED where it raises CdrError."""
+    results: dict[str, object] = {}
+    for name, decode in decoders.items():
         try:
             results[name] = decode()
         except cdr.CdrError:
             results[name] = DROPPED
     return results
+
+
+def _decoded_string(data: bytes) -> dict[str, object]:
+    """What each decoder of std_msgs/String gives for ``data``: the string or DROPPED."""
+    return _outcomes(
+        {
+            'deserialize': lambda: _string_data(cdr.deserialize('std_msgs/msg/String', data)),
+            'reference': lambda: _string_data(reference_deserialize('std_msgs/msg/String', data)),
+        }
+    )
 
 
 def _frames(message: Any) -> list[tuple[str, str]]:
     return [(t.header.frame_id, t.child_frame_id) for t in message.transforms]
 
 
-def _decoded_tf(data: bytes) -> dict[str, Any]:
+def _decoded_tf(data: bytes) -> dict[str, object]:
     """What each TFMessage decoder gives for ``data``: the (parent, child) list or DROPPED."""
-    results: dict[str, Any] = {}
-    decoders: tuple[tuple[str, Callable[[], object]], ...] = (
-        ('deserialize', lambda: _frames(cdr.deserialize('tf2_msgs/msg/TFMessage', data))),
-        ('reference', lambda: _frames(reference_deserialize('tf2_msgs/msg/TFMessage', data))),
-        ('tf fast path', lambda: [t[:2] for t in cdr.decode_tf_message_transforms(data)]),
+    return _outcomes(
+        {
+            'deserialize': lambda: _frames(cdr.deserialize('tf2_msgs/msg/TFMessage', data)),
+            'reference': lambda: _frames(reference_deserialize('tf2_msgs/msg/TFMessage', data)),
+            'tf fast path': lambda: [t[:2] for t in cdr.decode_tf_message_transforms(data)],
+        }
     )
-    for name, decode in decoders:
-        try:
-            results[name] = decode()
-        except cdr.CdrError:
-            results[name] = DROPPED
-    return results
 
 
 def _arm_layout(
