@@ -95,15 +95,15 @@ def test_requesting_rclpy_without_it_is_a_clear_error() -> None:
 def test_dds_world_node_api_comes_from_the_dds_backend() -> None:
     """In the DDS world Node, executors and message modules are the standalone ones."""
     code = (
-        'import tf_demo.transport as t; from tf_demo.transport import messages as m; '
-        'print(t.Node.__module__, t.SingleThreadedExecutor.__module__, '
+        'from tf_demo.transport import executors as e, messages as m, node as n; '
+        'print(n.Node.__module__, e.SingleThreadedExecutor.__module__, '
         'm.geometry_msgs.__name__, m.tf2_msgs.TFMessage.__msgtype__)'
     )
     completed = run_probe(code, 'dds')
     assert completed.returncode == 0, completed.stderr
     assert completed.stdout.split() == [
-        'tf_demo.transport.dds_backend',
-        'tf_demo.transport.dds_backend',
+        'tf_demo.transport.dds.node',
+        'tf_demo.transport.dds.executors',
         'tf_demo.msgs.geometry_msgs',
         'tf2_msgs/msg/TFMessage',
     ]
@@ -151,9 +151,9 @@ def test_explicit_dds_never_imports_an_installed_rclpy(importable_rclpy: Path) -
     """TF_DEMO_BACKEND=dds keeps rclpy (and its signal handlers) out of the process."""
     code = (
         'import sys; import tf_demo.transport.messages, tf_demo.transport.qos, '
-        'tf_demo.transport.clock, tf_demo.transport as t; '
-        "print(t.backend_name(), 'rclpy' in sys.modules, t.Node.__module__)"
+        'tf_demo.transport.clock, tf_demo.transport as t, tf_demo.transport.node as n; '
+        "print(t.backend_name(), 'rclpy' in sys.modules, n.Node.__module__)"
     )
     completed = run_probe(code, ' DDS ', importable_rclpy)
     assert completed.returncode == 0, completed.stderr
-    assert completed.stdout.split() == ['dds', 'False', 'tf_demo.transport.dds_backend']
+    assert completed.stdout.split() == ['dds', 'False', 'tf_demo.transport.dds.node']

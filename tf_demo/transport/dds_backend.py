@@ -84,23 +84,3 @@ __all__ = [
     'validate_namespace',
     'validate_node_name',
 ]
-
-# The public classes name this module as their home (as numpy's ``set_module`` does), so that
-# ``Node.__module__`` says which backend a class comes from, wherever in ``dds/`` it is defined.
-for _public in (
-    CallbackGroup,
-    DdsExecutor,
-    DdsNode,
-    DdsPublisher,
-    DdsSubscription,
-    DdsTask,
-    DdsTimer,
-    ExternalShutdownException,
-    InvalidNameError,
-    MultiThreadedExecutor,
-    MutuallyExclusiveCallbackGroup,
-    ReentrantCallbackGroup,
-    SingleThreadedExecutor,
-):
-    _public.__module__ = __name__
-del _public
