@@ -899,8 +899,6 @@ def test_clock_to_msg_gives_valid_stamps() -> None:
 #: The one function that does more than pass through: ``init`` calls ``rclpy.init`` and turns
 #: rcl's refusal of the ``--ros-args`` into RosArgsError (rcl parses them, once).
 RCL_ERROR_TRANSLATORS = frozenset({'init'})
-#: rclpy_backend names whose rclpy object is spelled differently (rclpy nests the type enum).
-RENAMED = {'ParameterType': 'rclpy.parameter.Parameter.Type'}
 #: The modules that choose the world: standalone names when type checking or outside rclpy.
 WORLD_FACADES = ('callback_groups', 'clock', 'executors', 'logging', 'node', 'parameters', 'qos')
 RUNTIME_FUNCTIONS = frozenset(
@@ -951,53 +949,114 @@ def test_rclpy_backend_is_a_pure_pass_through() -> None:
             source = _dotted(statement.value)
             assert source is not None, ast.unparse(statement)
             assert source.startswith(('rclpy.', 'rcl_interfaces.msg.')), ast.unparse(statement)
-            expected = RENAMED.get(target.id, f'{source.rsplit(".", 1)[0]}.{target.id}')
+            expected = f'{source.rsplit(".", 1)[0]}.{target.id}'
             assert source == expected, ast.unparse(statement)
             aliases[target.id] = source
     assert aliases['Node'] == 'rclpy.node.Node'
 
 
-def _world_branches(module_name: str) -> tuple[dict[str, str], set[str]]:
-    """A facade's names: standalone branch (name -> its dds module), and its rclpy branch."""
+#: Assignments a facade's rclpy branch may make after its star imports (rclpy nests the enum).
+RCLPY_BRANCH_ASSIGNMENTS = {'parameters': {'ParameterType = Parameter.Type'}}
+
+
+def _world_branches(module_name: str) -> tuple[list[str], list[str], set[str]]:
+    """A facade's star-imported modules: standalone branch, rclpy branch, and its assignments."""
     path = REPO_ROOT / f'tf_demo/transport/{module_name}.py'
     tree = ast.parse(path.read_text(encoding='utf-8'))
     (selection,) = [statement for statement in tree.body if isinstance(statement, ast.If)]
     assert ast.unparse(selection.test) == 'TYPE_CHECKING or not rclpy_world()'
-    standalone: dict[str, str] = {}
+    standalone: list[str] = []
     for statement in selection.body:
         assert isinstance(statement, ast.ImportFrom), ast.unparse(statement)
-        standalone.update({alias.name: str(statement.module) for alias in statement.names})
-    rclpy_names: set[str] = set()
+        assert [alias.name for alias in statement.names] == ['*'], ast.unparse(statement)
+        standalone.append(str(statement.module))
+    rclpy_modules: list[str] = []
+    assignments: set[str] = set()
     for statement in selection.orelse:
+        if isinstance(statement, ast.Assign):
+            assignments.add(ast.unparse(statement))
+            continue
         assert isinstance(statement, ast.ImportFrom), ast.unparse(statement)
-        assert statement.module == 'tf_demo.transport.rclpy_backend', ast.unparse(statement)
-        rclpy_names.update(alias.name for alias in statement.names)
-    return standalone, rclpy_names
+        if str(statement.module).startswith('tf_demo.'):  # tf_demo's own in both worlds
+            own = {alias.name for alias in statement.names}
+            assert own <= TF_DEMO_ONLY_NAMES[module_name], ast.unparse(statement)
+            continue
+        assert [alias.name for alias in statement.names] == ['*'], ast.unparse(statement)
+        rclpy_modules.append(str(statement.module))
+    return standalone, rclpy_modules, assignments
+
+
+def _facade_names(module_name: str) -> set[str]:
+    """What a facade offers: the ``__all__`` of the standalone modules it star-imports."""
+    names: set[str] = set()
+    for dds_module in _world_branches(module_name)[0]:
+        path = REPO_ROOT / (dds_module.replace('.', '/') + '.py')
+        tree = ast.parse(path.read_text(encoding='utf-8'))
+        (exported,) = [
+            statement.value
+            for statement in tree.body
+            if isinstance(statement, ast.Assign)
+            and [ast.unparse(target) for target in statement.targets] == ['__all__']
+        ]
+        names.update(ast.literal_eval(exported))
+    return names
 
 
 @pytest.mark.parametrize('module_name', WORLD_FACADES)
-def test_each_facade_takes_the_same_names_from_either_world(module_name: str) -> None:
-    """The standalone branch and the rclpy branch of a facade import the same names."""
-    standalone, rclpy_names = _world_branches(module_name)
-    assert set(standalone) == rclpy_names
-    assert all(source.startswith('tf_demo.transport.dds.') for source in standalone.values())
-    assert rclpy_names <= _rclpy_backend_names(), rclpy_names - _rclpy_backend_names()
+def test_each_facade_imports_one_world_by_module(module_name: str) -> None:
+    """Each branch star-imports whole modules of one world: the standalone ones or rclpy's."""
+    standalone, rclpy_modules, assignments = _world_branches(module_name)
+    assert standalone, module_name
+    assert all(name.startswith('tf_demo.transport.dds.') for name in standalone), standalone
+    assert rclpy_modules, module_name
+    assert all(name.startswith(('rclpy.', 'rcl_interfaces.')) for name in rclpy_modules)
+    assert assignments == RCLPY_BRANCH_ASSIGNMENTS.get(module_name, set())
+
+
+def _home_module(value: object) -> str:
+    """The module that defines ``value`` (for a profile or other instance: its class's)."""
+    home = getattr(value, '__module__', None)
+    return home if isinstance(home, str) else type(value).__module__
 
 
 @pytest.mark.parametrize('module_name', WORLD_FACADES)
 def test_each_facade_holds_this_worlds_objects(module_name: str) -> None:
-    """Imported for real, a facade's world names are rclpy's objects or the standalone ones."""
+    """Imported for real, each world name of a facade is rclpy's object or the standalone one."""
     import importlib
 
     from tf_demo.transport.backend import rclpy_world
 
     module = importlib.import_module(f'tf_demo.transport.{module_name}')
-    standalone, _ = _world_branches(module_name)
-    for name, source in standalone.items():
-        home = importlib.import_module(
-            'tf_demo.transport.rclpy_backend' if rclpy_world() else source
-        )
-        assert getattr(module, name) is getattr(home, name), name
+    homes = ('rclpy.', 'rcl_interfaces.') if rclpy_world() else ('tf_demo.transport.dds.',)
+    names = _facade_names(module_name)
+    for name in sorted(names):
+        assert hasattr(module, name), f'{module_name}.{name} is missing in this world'
+        value = getattr(module, name)
+        if name in TF_DEMO_ONLY_NAMES[module_name] or type(value).__module__ == 'builtins':
+            continue  # tf_demo's own in both worlds, or a plain constant (S_TO_NS)
+        assert _home_module(value).startswith(homes), (name, WORLD)
+
+
+@pytest.mark.rclpy_world
+def test_rclpy_world_facades_name_rclpys_own_classes() -> None:
+    """Where rclpy modules reuse a name, the facade holds the one rclpy's node API means."""
+    import rclpy.executors
+    import rclpy.node
+    import rclpy.parameter
+    import rclpy.qos
+    import rclpy.time
+    from tf_demo.transport import clock
+    from tf_demo.transport import executors
+    from tf_demo.transport import node
+    from tf_demo.transport import parameters
+    from tf_demo.transport import qos
+
+    assert parameters.Parameter is rclpy.parameter.Parameter  # not rcl_interfaces' message
+    assert parameters.ParameterType is rclpy.parameter.Parameter.Type
+    assert node.Node is rclpy.node.Node
+    assert executors.Executor is rclpy.executors.Executor
+    assert clock.Time is rclpy.time.Time
+    assert qos.QoSProfile is rclpy.qos.QoSProfile
 
 
 @pytest.mark.standalone  # imports the DDS backend
@@ -1024,13 +1083,14 @@ TF_DEMO_ONLY_NAMES = {
 
 
 @pytest.mark.parametrize('module_name', sorted(TF_DEMO_ONLY_NAMES))
-def test_rclpy_world_replaces_every_rclpy_concept_of_the_node_api(module_name: str) -> None:
-    """In the rclpy world each public name of a facade is rclpy's, but tf_demo's own extras."""
+def test_tf_demos_own_facade_names_are_never_rclpys(module_name: str) -> None:
+    """tf_demo's own extras (tf2's QoS functions, rcutils' line format...) stay tf_demo's."""
     import importlib
 
     module = importlib.import_module(f'tf_demo.transport.{module_name}')
-    _, rclpy_names = _world_branches(module_name)
-    assert set(module.__all__) - TF_DEMO_ONLY_NAMES[module_name] == rclpy_names
+    for name in TF_DEMO_ONLY_NAMES[module_name]:
+        assert hasattr(module, name), f'{module_name}.{name} is missing in this world'
+        assert not _home_module(getattr(module, name)).startswith(('rclpy', 'rcl_interfaces'))
 
 
 # --------------------------------------------------------------------------------------------

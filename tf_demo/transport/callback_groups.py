@@ -26,16 +26,6 @@ from typing import TYPE_CHECKING
 from tf_demo.transport.backend import rclpy_world
 
 if TYPE_CHECKING or not rclpy_world():
-    from tf_demo.transport.dds.callback_groups import CallbackGroup
-    from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
-    from tf_demo.transport.dds.callback_groups import ReentrantCallbackGroup
+    from tf_demo.transport.dds.callback_groups import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
-    from tf_demo.transport.rclpy_backend import CallbackGroup
-    from tf_demo.transport.rclpy_backend import MutuallyExclusiveCallbackGroup
-    from tf_demo.transport.rclpy_backend import ReentrantCallbackGroup
-
-__all__ = [
-    'CallbackGroup',
-    'MutuallyExclusiveCallbackGroup',
-    'ReentrantCallbackGroup',
-]
+    from rclpy.callback_groups import *  # noqa: F403 - rclpy's own

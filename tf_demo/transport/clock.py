@@ -26,46 +26,15 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from tf_demo.transport.backend import rclpy_world
-from tf_demo.transport.dds.time_source import CLOCK_TOPIC
-from tf_demo.transport.dds.time_source import USE_SIM_TIME_NAME
 
 if TYPE_CHECKING or not rclpy_world():
-    from tf_demo.transport.dds.clock import Clock
-    from tf_demo.transport.dds.clock import JumpHandle
-    from tf_demo.transport.dds.clock import JumpThreshold
-    from tf_demo.transport.dds.clock import ROSClock
-    from tf_demo.transport.dds.clock import TimeJump
-    from tf_demo.transport.dds.time import ClockChange
-    from tf_demo.transport.dds.time import ClockType
-    from tf_demo.transport.dds.time import Duration
-    from tf_demo.transport.dds.time import Infinite
-    from tf_demo.transport.dds.time import Time
-    from tf_demo.transport.dds.time_source import TimeSource
+    from tf_demo.transport.dds.clock import *  # noqa: F403 - the standalone names
+    from tf_demo.transport.dds.time import *  # noqa: F403 - the standalone names
+    from tf_demo.transport.dds.time_source import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
-    from tf_demo.transport.rclpy_backend import Clock
-    from tf_demo.transport.rclpy_backend import ClockChange
-    from tf_demo.transport.rclpy_backend import ClockType
-    from tf_demo.transport.rclpy_backend import Duration
-    from tf_demo.transport.rclpy_backend import Infinite
-    from tf_demo.transport.rclpy_backend import JumpHandle
-    from tf_demo.transport.rclpy_backend import JumpThreshold
-    from tf_demo.transport.rclpy_backend import ROSClock
-    from tf_demo.transport.rclpy_backend import Time
-    from tf_demo.transport.rclpy_backend import TimeJump
-    from tf_demo.transport.rclpy_backend import TimeSource
-
-__all__ = [
-    'CLOCK_TOPIC',
-    'USE_SIM_TIME_NAME',
-    'Clock',
-    'ClockChange',
-    'ClockType',
-    'Duration',
-    'Infinite',
-    'JumpHandle',
-    'JumpThreshold',
-    'ROSClock',
-    'Time',
-    'TimeJump',
-    'TimeSource',
-]
+    from rclpy.clock import *  # noqa: F403 - rclpy's own
+    from rclpy.duration import *  # noqa: F403 - rclpy's own
+    from rclpy.time import *  # noqa: F403 - rclpy's own
+    from rclpy.time_source import *  # noqa: F403 - rclpy's own
+    from tf_demo.transport.dds.time_source import CLOCK_TOPIC  # tf_demo's in both worlds
+    from tf_demo.transport.dds.time_source import USE_SIM_TIME_NAME

@@ -26,19 +26,7 @@ from typing import TYPE_CHECKING
 from tf_demo.transport.backend import rclpy_world
 
 if TYPE_CHECKING or not rclpy_world():
-    from tf_demo.transport.dds.executors import Executor
-    from tf_demo.transport.dds.executors import ExternalShutdownException
-    from tf_demo.transport.dds.executors import SingleThreadedExecutor
-    from tf_demo.transport.dds.multi_threaded_executor import MultiThreadedExecutor
+    from tf_demo.transport.dds.executors import *  # noqa: F403 - the standalone names
+    from tf_demo.transport.dds.multi_threaded_executor import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
-    from tf_demo.transport.rclpy_backend import Executor
-    from tf_demo.transport.rclpy_backend import ExternalShutdownException
-    from tf_demo.transport.rclpy_backend import MultiThreadedExecutor
-    from tf_demo.transport.rclpy_backend import SingleThreadedExecutor
-
-__all__ = [
-    'Executor',
-    'ExternalShutdownException',
-    'MultiThreadedExecutor',
-    'SingleThreadedExecutor',
-]
+    from rclpy.executors import *  # noqa: F403 - rclpy's own

@@ -27,35 +27,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from tf_demo.transport.backend import rclpy_world
-from tf_demo.transport.dds.log_format import DEFAULT_OUTPUT_FORMAT
-from tf_demo.transport.dds.log_format import format_log_line
-from tf_demo.transport.dds.logging import Logger
-from tf_demo.transport.dds.logging import set_default_logger_level
 
 if TYPE_CHECKING or not rclpy_world():
-    from tf_demo.transport.dds.log_format import get_logging_severity_from_string
-    from tf_demo.transport.dds.log_format import LoggingSeverity
-    from tf_demo.transport.dds.logging import get_logger
-    from tf_demo.transport.dds.logging import get_logger_effective_level
-    from tf_demo.transport.dds.logging import get_logger_level
-    from tf_demo.transport.dds.logging import set_logger_level
+    from tf_demo.transport.dds.log_format import *  # noqa: F403 - the standalone names
+    from tf_demo.transport.dds.logging import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
-    from tf_demo.transport.rclpy_backend import get_logger
-    from tf_demo.transport.rclpy_backend import get_logger_effective_level
-    from tf_demo.transport.rclpy_backend import get_logger_level
-    from tf_demo.transport.rclpy_backend import get_logging_severity_from_string
-    from tf_demo.transport.rclpy_backend import LoggingSeverity
-    from tf_demo.transport.rclpy_backend import set_logger_level
-
-__all__ = [
-    'DEFAULT_OUTPUT_FORMAT',
-    'Logger',
-    'LoggingSeverity',
-    'format_log_line',
-    'get_logger',
-    'get_logger_effective_level',
-    'get_logger_level',
-    'get_logging_severity_from_string',
-    'set_default_logger_level',
-    'set_logger_level',
-]
+    from rclpy.logging import *  # noqa: F403 - rclpy's own
+    from tf_demo.transport.dds.log_format import DEFAULT_OUTPUT_FORMAT  # tf_demo's in both worlds
+    from tf_demo.transport.dds.log_format import format_log_line
+    from tf_demo.transport.dds.logging import Logger
+    from tf_demo.transport.dds.logging import set_default_logger_level

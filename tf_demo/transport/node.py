@@ -28,10 +28,6 @@ from typing import TYPE_CHECKING
 from tf_demo.transport.backend import rclpy_world
 
 if TYPE_CHECKING or not rclpy_world():
-    from tf_demo.transport.dds.node import Node
+    from tf_demo.transport.dds.node import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
-    from tf_demo.transport.rclpy_backend import Node
-
-__all__ = [
-    'Node',
-]
+    from rclpy.node import *  # noqa: F403 - rclpy's own

@@ -27,49 +27,10 @@ from typing import TYPE_CHECKING
 from tf_demo.transport.backend import rclpy_world
 
 if TYPE_CHECKING or not rclpy_world():
-    from tf_demo.transport.dds.parameters import FloatingPointRange
-    from tf_demo.transport.dds.parameters import IntegerRange
-    from tf_demo.transport.dds.parameters import InvalidParameterException
-    from tf_demo.transport.dds.parameters import InvalidParameterTypeException
-    from tf_demo.transport.dds.parameters import InvalidParameterValueException
-    from tf_demo.transport.dds.parameters import Parameter
-    from tf_demo.transport.dds.parameters import ParameterAlreadyDeclaredException
-    from tf_demo.transport.dds.parameters import ParameterDescriptor
-    from tf_demo.transport.dds.parameters import ParameterException
-    from tf_demo.transport.dds.parameters import ParameterImmutableException
-    from tf_demo.transport.dds.parameters import ParameterNotDeclaredException
-    from tf_demo.transport.dds.parameters import ParameterType
-    from tf_demo.transport.dds.parameters import ParameterUninitializedException
-    from tf_demo.transport.dds.parameters import SetParametersResult
+    from tf_demo.transport.dds.parameters import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
-    from tf_demo.transport.rclpy_backend import FloatingPointRange
-    from tf_demo.transport.rclpy_backend import IntegerRange
-    from tf_demo.transport.rclpy_backend import InvalidParameterException
-    from tf_demo.transport.rclpy_backend import InvalidParameterTypeException
-    from tf_demo.transport.rclpy_backend import InvalidParameterValueException
-    from tf_demo.transport.rclpy_backend import Parameter
-    from tf_demo.transport.rclpy_backend import ParameterAlreadyDeclaredException
-    from tf_demo.transport.rclpy_backend import ParameterDescriptor
-    from tf_demo.transport.rclpy_backend import ParameterException
-    from tf_demo.transport.rclpy_backend import ParameterImmutableException
-    from tf_demo.transport.rclpy_backend import ParameterNotDeclaredException
-    from tf_demo.transport.rclpy_backend import ParameterType
-    from tf_demo.transport.rclpy_backend import ParameterUninitializedException
-    from tf_demo.transport.rclpy_backend import SetParametersResult
+    from rcl_interfaces.msg import *  # noqa: F403 - rclpy's own
+    from rclpy.exceptions import *  # noqa: F403 - rclpy's own
+    from rclpy.parameter import *  # noqa: F403 - rclpy's own
 
-__all__ = [
-    'FloatingPointRange',
-    'IntegerRange',
-    'InvalidParameterException',
-    'InvalidParameterTypeException',
-    'InvalidParameterValueException',
-    'Parameter',
-    'ParameterAlreadyDeclaredException',
-    'ParameterDescriptor',
-    'ParameterException',
-    'ParameterImmutableException',
-    'ParameterNotDeclaredException',
-    'ParameterType',
-    'ParameterUninitializedException',
-    'SetParametersResult',
-]
+    ParameterType = Parameter.Type  # rclpy nests the type enum in Parameter

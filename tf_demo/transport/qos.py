@@ -32,74 +32,9 @@ from typing import TYPE_CHECKING
 from tf_demo.transport.backend import rclpy_world
 
 if TYPE_CHECKING or not rclpy_world():
-    from tf_demo.transport.dds.qos import DurabilityPolicy
-    from tf_demo.transport.dds.qos import HistoryPolicy
-    from tf_demo.transport.dds.qos import InvalidQoSProfileException
-    from tf_demo.transport.dds.qos import LivelinessPolicy
-    from tf_demo.transport.dds.qos import qos_profile_action_status_default
-    from tf_demo.transport.dds.qos import qos_profile_best_available
-    from tf_demo.transport.dds.qos import qos_profile_default
-    from tf_demo.transport.dds.qos import qos_profile_parameter_events
-    from tf_demo.transport.dds.qos import qos_profile_parameters
-    from tf_demo.transport.dds.qos import qos_profile_sensor_data
-    from tf_demo.transport.dds.qos import qos_profile_services_default
-    from tf_demo.transport.dds.qos import qos_profile_system_default
-    from tf_demo.transport.dds.qos import qos_profile_unknown
-    from tf_demo.transport.dds.qos import QoSDurabilityPolicy
-    from tf_demo.transport.dds.qos import QoSHistoryPolicy
-    from tf_demo.transport.dds.qos import QoSLivelinessPolicy
-    from tf_demo.transport.dds.qos import QoSPresetProfiles
-    from tf_demo.transport.dds.qos import QoSProfile
-    from tf_demo.transport.dds.qos import QoSReliabilityPolicy
-    from tf_demo.transport.dds.qos import ReliabilityPolicy
+    from tf_demo.transport.dds.qos import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
-    from tf_demo.transport.rclpy_backend import DurabilityPolicy
-    from tf_demo.transport.rclpy_backend import HistoryPolicy
-    from tf_demo.transport.rclpy_backend import InvalidQoSProfileException
-    from tf_demo.transport.rclpy_backend import LivelinessPolicy
-    from tf_demo.transport.rclpy_backend import qos_profile_action_status_default
-    from tf_demo.transport.rclpy_backend import qos_profile_best_available
-    from tf_demo.transport.rclpy_backend import qos_profile_default
-    from tf_demo.transport.rclpy_backend import qos_profile_parameter_events
-    from tf_demo.transport.rclpy_backend import qos_profile_parameters
-    from tf_demo.transport.rclpy_backend import qos_profile_sensor_data
-    from tf_demo.transport.rclpy_backend import qos_profile_services_default
-    from tf_demo.transport.rclpy_backend import qos_profile_system_default
-    from tf_demo.transport.rclpy_backend import qos_profile_unknown
-    from tf_demo.transport.rclpy_backend import QoSDurabilityPolicy
-    from tf_demo.transport.rclpy_backend import QoSHistoryPolicy
-    from tf_demo.transport.rclpy_backend import QoSLivelinessPolicy
-    from tf_demo.transport.rclpy_backend import QoSPresetProfiles
-    from tf_demo.transport.rclpy_backend import QoSProfile
-    from tf_demo.transport.rclpy_backend import QoSReliabilityPolicy
-    from tf_demo.transport.rclpy_backend import ReliabilityPolicy
-
-__all__ = [
-    'DurabilityPolicy',
-    'DynamicBroadcasterQoS',
-    'DynamicListenerQoS',
-    'HistoryPolicy',
-    'InvalidQoSProfileException',
-    'LivelinessPolicy',
-    'QoSDurabilityPolicy',
-    'QoSHistoryPolicy',
-    'QoSLivelinessPolicy',
-    'QoSPresetProfiles',
-    'QoSProfile',
-    'QoSReliabilityPolicy',
-    'ReliabilityPolicy',
-    'StaticBroadcasterQoS',
-    'StaticListenerQoS',
-    'qos_profile_action_status_default',
-    'qos_profile_best_available',
-    'qos_profile_default',
-    'qos_profile_parameter_events',
-    'qos_profile_parameters',
-    'qos_profile_sensor_data',
-    'qos_profile_services_default',
-    'qos_profile_system_default',
-    'qos_profile_unknown',
-]
+    from rclpy.qos import *  # noqa: F403 - rclpy's own
 
 
 def _tf2_profile(depth: int, durability: DurabilityPolicy) -> QoSProfile:

@@ -16,30 +16,21 @@
 The rclpy world: a thin pass-through to rclpy's documented API.
 
 Nothing is wrapped: ``Node`` is ``rclpy.node.Node``, so a user's own rclpy node works wherever
-the package takes a node. It also names rclpy's time, QoS, parameter and logging objects
-as :mod:`tf_demo.transport.clock`, ``qos``, ``parameters`` and ``logging`` name the standalone
-ones; those facades import them from here in the rclpy world. This is the only module (with
-``messages.py``) that imports rclpy.
+the package takes a node. These are the runtime functions :mod:`tf_demo.transport` forwards to
+the world's backend (``init`` turns rcl's refusal of the ``--ros-args`` into RosArgsError); the
+world's classes come from the facades (:mod:`tf_demo.transport.clock`, ``qos``, ``parameters``,
+``logging``, ``node``, ``executors``, ``callback_groups``), which import rclpy's own modules in
+the rclpy world.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-import rcl_interfaces.msg
 import rclpy
-import rclpy.callback_groups
-import rclpy.clock
-import rclpy.duration
-import rclpy.exceptions
 import rclpy.executors
 import rclpy.impl.implementation_singleton
-import rclpy.logging
 import rclpy.node
-import rclpy.parameter
-import rclpy.qos
-import rclpy.time
-import rclpy.time_source
 import rclpy.utilities
 from tf_demo.transport.ros_args import explain_rcl_error
 from tf_demo.transport.ros_args import RosArgsError
@@ -51,10 +42,7 @@ spin = rclpy.spin
 spin_once = rclpy.spin_once
 create_node = rclpy.create_node
 Node = rclpy.node.Node
-Executor = rclpy.executors.Executor
 SingleThreadedExecutor = rclpy.executors.SingleThreadedExecutor
-MultiThreadedExecutor = rclpy.executors.MultiThreadedExecutor
-ExternalShutdownException = rclpy.executors.ExternalShutdownException
 spin_until_future_complete = rclpy.spin_until_future_complete
 remove_ros_args = rclpy.utilities.remove_ros_args
 _rclpy_impl = rclpy.impl.implementation_singleton.rclpy_implementation
@@ -78,66 +66,3 @@ def init(*, args: list[str] | None = None, **kwargs: Any) -> None:
         if "Couldn't parse" not in text:
             raise
         raise RosArgsError(explain_rcl_error(text, args or [])) from None
-
-
-CallbackGroup = rclpy.callback_groups.CallbackGroup
-MutuallyExclusiveCallbackGroup = rclpy.callback_groups.MutuallyExclusiveCallbackGroup
-ReentrantCallbackGroup = rclpy.callback_groups.ReentrantCallbackGroup
-
-
-# rclpy's objects under the names the facades (``clock``, ``qos``, ``parameters``,
-# ``logging``) give the standalone ones.
-Clock = rclpy.clock.Clock
-ClockChange = rclpy.clock.ClockChange
-ClockType = rclpy.clock.ClockType
-JumpHandle = rclpy.clock.JumpHandle
-JumpThreshold = rclpy.clock.JumpThreshold
-ROSClock = rclpy.clock.ROSClock
-TimeJump = rclpy.clock.TimeJump
-Time = rclpy.time.Time
-Duration = rclpy.duration.Duration
-Infinite = rclpy.duration.Infinite
-TimeSource = rclpy.time_source.TimeSource
-
-DurabilityPolicy = rclpy.qos.DurabilityPolicy
-HistoryPolicy = rclpy.qos.HistoryPolicy
-InvalidQoSProfileException = rclpy.qos.InvalidQoSProfileException
-LivelinessPolicy = rclpy.qos.LivelinessPolicy
-QoSDurabilityPolicy = rclpy.qos.QoSDurabilityPolicy
-QoSHistoryPolicy = rclpy.qos.QoSHistoryPolicy
-QoSLivelinessPolicy = rclpy.qos.QoSLivelinessPolicy
-QoSPresetProfiles = rclpy.qos.QoSPresetProfiles
-QoSProfile = rclpy.qos.QoSProfile
-QoSReliabilityPolicy = rclpy.qos.QoSReliabilityPolicy
-ReliabilityPolicy = rclpy.qos.ReliabilityPolicy
-qos_profile_action_status_default = rclpy.qos.qos_profile_action_status_default
-qos_profile_best_available = rclpy.qos.qos_profile_best_available
-qos_profile_default = rclpy.qos.qos_profile_default
-qos_profile_parameter_events = rclpy.qos.qos_profile_parameter_events
-qos_profile_parameters = rclpy.qos.qos_profile_parameters
-qos_profile_sensor_data = rclpy.qos.qos_profile_sensor_data
-qos_profile_services_default = rclpy.qos.qos_profile_services_default
-qos_profile_system_default = rclpy.qos.qos_profile_system_default
-qos_profile_unknown = rclpy.qos.qos_profile_unknown
-
-InvalidParameterException = rclpy.exceptions.InvalidParameterException
-InvalidParameterTypeException = rclpy.exceptions.InvalidParameterTypeException
-InvalidParameterValueException = rclpy.exceptions.InvalidParameterValueException
-ParameterAlreadyDeclaredException = rclpy.exceptions.ParameterAlreadyDeclaredException
-ParameterException = rclpy.exceptions.ParameterException
-ParameterImmutableException = rclpy.exceptions.ParameterImmutableException
-ParameterNotDeclaredException = rclpy.exceptions.ParameterNotDeclaredException
-ParameterUninitializedException = rclpy.exceptions.ParameterUninitializedException
-Parameter = rclpy.parameter.Parameter
-ParameterType = rclpy.parameter.Parameter.Type
-FloatingPointRange = rcl_interfaces.msg.FloatingPointRange
-IntegerRange = rcl_interfaces.msg.IntegerRange
-ParameterDescriptor = rcl_interfaces.msg.ParameterDescriptor
-SetParametersResult = rcl_interfaces.msg.SetParametersResult
-
-LoggingSeverity = rclpy.logging.LoggingSeverity
-get_logger = rclpy.logging.get_logger
-get_logger_effective_level = rclpy.logging.get_logger_effective_level
-get_logger_level = rclpy.logging.get_logger_level
-get_logging_severity_from_string = rclpy.logging.get_logging_severity_from_string
-set_logger_level = rclpy.logging.set_logger_level

@@ -19,6 +19,8 @@ from __future__ import annotations
 import threading
 import weakref
 
+__all__ = ['CallbackGroup', 'MutuallyExclusiveCallbackGroup', 'ReentrantCallbackGroup']
+
 
 class CallbackGroup:
     """

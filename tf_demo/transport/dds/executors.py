@@ -37,6 +37,8 @@ from tf_demo.transport.dds.tasks import DdsTask
 from tf_demo.transport.dds.tasks import TaskHandler
 from tf_demo.transport.dds.timers import DdsTimer
 
+__all__ = ['Executor', 'ExternalShutdownException', 'SingleThreadedExecutor']
+
 _IDLE_WAIT_NS = 200_000_000
 _TASK_POLL_NS = 5_000_000
 _SIM_TIME_MAX_WAIT_NS = 10_000_000

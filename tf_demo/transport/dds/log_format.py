@@ -32,14 +32,12 @@ import sys
 import time
 from typing import TextIO
 
+#: rclpy.logging's names and the two the tools use in both worlds (the facade star-imports these).
 __all__ = [
     'DEFAULT_OUTPUT_FORMAT',
     'LoggingSeverity',
-    'c_string',
-    'console_line',
     'format_log_line',
     'get_logging_severity_from_string',
-    'incompatible_arguments',
 ]
 
 DEFAULT_OUTPUT_FORMAT = '[{severity}] [{time}] [{name}]: {message}'

@@ -40,14 +40,12 @@ from tf_demo.transport.dds.log_format import console_line
 from tf_demo.transport.dds.log_format import incompatible_arguments
 from tf_demo.transport.dds.log_format import LoggingSeverity
 
+#: rclpy.logging's names, Logger and --log-level's setter (the facade star-imports these).
 __all__ = [
-    'LogRecord',
     'Logger',
-    'add_log_sink',
     'get_logger',
     'get_logger_effective_level',
     'get_logger_level',
-    'remove_log_sink',
     'set_default_logger_level',
     'set_logger_level',
 ]

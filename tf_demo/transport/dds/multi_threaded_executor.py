@@ -25,6 +25,8 @@ import warnings
 
 from tf_demo.transport.dds.executors import DdsExecutor
 
+__all__ = ['MultiThreadedExecutor']
+
 
 def _default_thread_count() -> int:
     """Return rclpy's default pool size: the CPUs this process may use, else the count, or 2."""

@@ -53,6 +53,8 @@ from tf_demo.transport.dds.services import AnyService
 from tf_demo.transport.dds.time_source import TimeSource
 from tf_demo.transport.dds.timers import DdsTimer
 
+__all__ = ['Node']
+
 
 class _NodeExecutor(Protocol):
     """What a node asks of the executors that spin it."""

@@ -34,31 +34,22 @@ from typing import Any
 
 from tf_demo.msgs import rcl_interfaces
 
+#: rclpy's public names (the facade star-imports these); the rest is this world's own.
 __all__ = [
-    'PARAM_REL_TOL',
     'FloatingPointRange',
     'IntegerRange',
     'InvalidParameterException',
     'InvalidParameterTypeException',
     'InvalidParameterValueException',
-    'OnSetCallback',
     'Parameter',
     'ParameterAlreadyDeclaredException',
     'ParameterDescriptor',
-    'ParameterEventSink',
     'ParameterException',
     'ParameterImmutableException',
     'ParameterNotDeclaredException',
     'ParameterType',
     'ParameterUninitializedException',
-    'PostSetCallback',
-    'PreSetCallback',
     'SetParametersResult',
-    'check_floating_point_range',
-    'check_integer_range',
-    'parameter_from_msg',
-    'parameter_to_msg',
-    'parameter_value_to_msg',
 ]
 
 

@@ -48,12 +48,10 @@ __all__ = [
     'qos_profile_default',
     'qos_profile_parameter_events',
     'qos_profile_parameters',
-    'qos_profile_rosout_default',
     'qos_profile_sensor_data',
     'qos_profile_services_default',
     'qos_profile_system_default',
     'qos_profile_unknown',
-    'validate_qos_or_depth',
 ]
 
 
