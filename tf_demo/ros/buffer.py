@@ -64,7 +64,6 @@ world's own ``geometry_msgs/TransformStamped``.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from collections.abc import Iterable
 import logging
 import threading
@@ -174,14 +173,100 @@ def _ns_from(value: object, what: str) -> int:
 
 
 class _Query(NamedTuple):
-    """One question to the buffer: its ``(possible, error text)`` now, and its lookup."""
+    """
+    A question of tf2's basic API to a core: target_T_source at one time (integer ns).
 
-    answer: Callable[[], tuple[bool, str]]
-    lookup: Callable[[], TransformStamped]
+    What the blocking, awaitable and ``*_core`` variants of a tf2_ros method share.
+    """
+
+    core: BufferCore
+    target_frame: str
+    source_frame: str
+    time_ns: int
+
+    def answer(self) -> tuple[bool, str]:
+        """Return ``(possible, error text)`` now."""
+        return self.core.can_transform(
+            self.target_frame, self.source_frame, self.time_ns, return_debug_tuple=True
+        )
 
     def ready(self) -> bool:
         """Whether the lookup would succeed now."""
-        return self.answer()[0]
+        return self.core.can_transform(self.target_frame, self.source_frame, self.time_ns)
+
+    def lookup(self) -> TransformStamped:
+        """Look the transform up now; raises tf2's exceptions."""
+        result = self.core.lookup_transform(self.target_frame, self.source_frame, self.time_ns)
+        return _message(self.target_frame, self.source_frame, result)
+
+    def timeout_text(self) -> str:
+        """Return the text of the ``TimeoutException`` of an awaitable wait that timed out."""
+        return (
+            f'Timed out waiting for transform from [{self.source_frame}] to [{self.target_frame}]'
+        )
+
+
+class _FullQuery(NamedTuple):
+    """A question of tf2's advanced API: target and source at two times, via a fixed frame."""
+
+    core: BufferCore
+    args: tuple[str, int, str, int, str]
+    """The core's arguments: target frame, target time (ns), source frame, source time, fixed."""
+
+    def answer(self) -> tuple[bool, str]:
+        """Return ``(possible, error text)`` now."""
+        return self.core.can_transform_full(*self.args, return_debug_tuple=True)
+
+    def ready(self) -> bool:
+        """Whether the lookup would succeed now."""
+        return self.core.can_transform_full(*self.args)
+
+    def lookup(self) -> TransformStamped:
+        """Look the transform up now; raises tf2's exceptions."""
+        target_frame, _, source_frame, _, _ = self.args
+        return _message(target_frame, source_frame, self.core.lookup_transform_full(*self.args))
+
+    def timeout_text(self) -> str:
+        """Return the text of the ``TimeoutException`` of an awaitable wait that timed out."""
+        target_frame, _, source_frame, _, fixed_frame = self.args
+        return (
+            f'Timed out waiting for transform from [{source_frame}] to [{target_frame}] '
+            f'via [{fixed_frame}]'
+        )
+
+
+def _query(core: BufferCore, target_frame: str, source_frame: str, time: TimeLike) -> _Query:
+    """Return the basic-API question of tf2_ros's arguments, its time in integer nanoseconds."""
+    return _Query(core, target_frame, source_frame, ns_from_time(time))
+
+
+def _full_query(  # noqa: PLR0917 - tf2_ros argument order
+    core: BufferCore,
+    target_frame: str,
+    target_time: TimeLike,
+    source_frame: str,
+    source_time: TimeLike,
+    fixed_frame: str,
+) -> _FullQuery:
+    """Return the advanced-API question of tf2_ros's arguments, times in integer nanoseconds."""
+    return _FullQuery(
+        core,
+        (
+            target_frame,
+            ns_from_time(target_time),
+            source_frame,
+            ns_from_time(source_time),
+            fixed_frame,
+        ),
+    )
+
+
+def _message(target_frame: str, source_frame: str, result: TransformResult) -> TransformStamped:
+    """Return the core's ``result`` as the world's ``geometry_msgs/TransformStamped``."""
+    msg: TransformStamped = geometry_msgs.TransformStamped()
+    return fill_transform_stamped(
+        msg, target_frame, source_frame, result.stamp_ns, result.translation, result.rotation
+    )
 
 
 class Buffer:
@@ -353,23 +438,13 @@ class Buffer:
             self._log_source.writer = None
         return failures
 
-    @staticmethod
-    def _message(
-        target_frame: str, source_frame: str, result: TransformResult
-    ) -> TransformStamped:
-        msg: TransformStamped = geometry_msgs.TransformStamped()
-        return fill_transform_stamped(
-            msg, target_frame, source_frame, result.stamp_ns, result.translation, result.rotation
-        )
-
     # ---------------------------------------------------------------- tf2_py's core names
 
     def lookup_transform_core(
         self, target_frame: str, source_frame: str, time: TimeLike
     ) -> TransformStamped:
         """Look up target_T_source now, without waiting; raises tf2's exceptions."""
-        result = self.core.lookup_transform(target_frame, source_frame, ns_from_time(time))
-        return self._message(target_frame, source_frame, result)
+        return _query(self.core, target_frame, source_frame, time).lookup()
 
     def lookup_transform_full_core(
         self,
@@ -380,16 +455,15 @@ class Buffer:
         fixed_frame: str,
     ) -> TransformStamped:
         """Look up with the advanced (time-travel) API now, without waiting."""
-        query = _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
-        return self._message(target_frame, source_frame, self.core.lookup_transform_full(*query))
+        return _full_query(
+            self.core, target_frame, target_time, source_frame, source_time, fixed_frame
+        ).lookup()
 
     def can_transform_core(
         self, target_frame: str, source_frame: str, time: TimeLike
     ) -> tuple[bool, str]:
         """Return ``(possible, error_text)`` now, without waiting."""
-        return self.core.can_transform(
-            target_frame, source_frame, ns_from_time(time), return_debug_tuple=True
-        )
+        return _query(self.core, target_frame, source_frame, time).answer()
 
     def can_transform_full_core(
         self,
@@ -400,8 +474,9 @@ class Buffer:
         fixed_frame: str,
     ) -> tuple[bool, str]:
         """Return ``(possible, error_text)`` for the advanced API now, without waiting."""
-        query = _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
-        return self.core.can_transform_full(*query, return_debug_tuple=True)
+        return _full_query(
+            self.core, target_frame, target_time, source_frame, source_time, fixed_frame
+        ).answer()
 
     def lookupVelocityCore(  # noqa: N802 - tf2_py name
         self,
@@ -437,9 +512,7 @@ class Buffer:
         :return: target_T_source as a ``TransformStamped``.
         :raises TransformException: the core's specific error when it is (still) unavailable.
         """
-        query = self._query(target_frame, source_frame, time)
-        self._waits.wait_until(query.ready, ns_from_duration(timeout))
-        return query.lookup()
+        return self._lookup(_query(self.core, target_frame, source_frame, time), timeout)
 
     def lookup_transform_full(  # noqa: PLR0917 - tf2_ros signature
         self,
@@ -451,15 +524,15 @@ class Buffer:
         timeout: DurationLike | None = None,
     ) -> TransformStamped:
         """
-        Get the transform between two frames at two times through a fixed frame.
+        As :meth:`lookup_transform`, with target and source at two times (tf2's advanced API).
 
-        :return: the transform as a ``TransformStamped``.
+        ``source_frame`` at ``source_time`` is chained through ``fixed_frame`` (a frame that does
+        not move between the two times) to ``target_frame`` at ``target_time``.
         """
-        query = self._full_query(
-            _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
+        query = _full_query(
+            self.core, target_frame, target_time, source_frame, source_time, fixed_frame
         )
-        self._waits.wait_until(query.ready, ns_from_duration(timeout))
-        return query.lookup()
+        return self._lookup(query, timeout)
 
     def can_transform(
         self,
@@ -470,14 +543,12 @@ class Buffer:
         return_debug_tuple: bool = False,
     ) -> bool | tuple[bool, str]:
         """
-        Check whether the transform is possible, waiting up to ``timeout`` for it.
+        Check whether :meth:`lookup_transform` would succeed, waiting up to ``timeout`` for it.
 
         :return: ``bool``, or ``(bool, error_text)`` when ``return_debug_tuple``.
         """
-        query = self._query(target_frame, source_frame, time)
-        self._waits.wait_until(query.ready, ns_from_duration(timeout))
-        answer = query.answer()
-        return answer if return_debug_tuple else answer[0]
+        query = _query(self.core, target_frame, source_frame, time)
+        return self._check(query, timeout, return_debug_tuple)
 
     def can_transform_full(  # noqa: PLR0917 - tf2_ros signature
         self,
@@ -489,14 +560,23 @@ class Buffer:
         timeout: DurationLike | None = None,
         return_debug_tuple: bool = False,
     ) -> bool | tuple[bool, str]:
-        """
-        Check whether the advanced-API transform is possible, waiting up to ``timeout``.
-
-        :return: ``bool``, or ``(bool, error_text)`` when ``return_debug_tuple``.
-        """
-        query = self._full_query(
-            _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
+        """As :meth:`can_transform`, for :meth:`lookup_transform_full`'s question."""
+        query = _full_query(
+            self.core, target_frame, target_time, source_frame, source_time, fixed_frame
         )
+        return self._check(query, timeout, return_debug_tuple)
+
+    def _lookup(
+        self, query: _Query | _FullQuery, timeout: DurationLike | None
+    ) -> TransformStamped:
+        """Wait up to ``timeout`` until ``query`` can be answered, then look it up."""
+        self._waits.wait_until(query.ready, ns_from_duration(timeout))
+        return query.lookup()
+
+    def _check(
+        self, query: _Query | _FullQuery, timeout: DurationLike | None, return_debug_tuple: bool
+    ) -> bool | tuple[bool, str]:
+        """Wait up to ``timeout`` until ``query`` can be answered; return whether it can."""
         self._waits.wait_until(query.ready, ns_from_duration(timeout))
         answer = query.answer()
         return answer if return_debug_tuple else answer[0]
@@ -517,11 +597,7 @@ class Buffer:
             ``TimeoutException``. ``None`` waits forever (upstream behaviour).
         :return: a future (rclpy ``Future`` API) resolving to target_T_source.
         """
-        return self._wait_async(
-            self._query(target_frame, source_frame, time),
-            timeout,
-            f'Timed out waiting for transform from [{source_frame}] to [{target_frame}]',
-        )
+        return self._wait_async(_query(self.core, target_frame, source_frame, time), timeout)
 
     def wait_for_transform_full_async(  # noqa: PLR0917 - tf2_ros signature
         self,
@@ -532,19 +608,11 @@ class Buffer:
         fixed_frame: str,
         timeout: DurationLike | None = None,
     ) -> Future[TransformStamped]:
-        """
-        Wait for an advanced-API transform without blocking; resolves to the transform.
-
-        :return: a future resolving to the ``TransformStamped``.
-        """
-        return self._wait_async(
-            self._full_query(
-                _full_args(target_frame, target_time, source_frame, source_time, fixed_frame)
-            ),
-            timeout,
-            f'Timed out waiting for transform from [{source_frame}] to [{target_frame}] '
-            f'via [{fixed_frame}]',
+        """As :meth:`wait_for_transform_async`, for :meth:`lookup_transform_full`'s question."""
+        query = _full_query(
+            self.core, target_frame, target_time, source_frame, source_time, fixed_frame
         )
+        return self._wait_async(query, timeout)
 
     async def lookup_transform_async(
         self,
@@ -569,30 +637,16 @@ class Buffer:
         fixed_frame: str,
         timeout: DurationLike | None = None,
     ) -> TransformStamped:
-        """Await an advanced-API transform (looked up once)."""
+        """As :meth:`lookup_transform_async`, for :meth:`lookup_transform_full`'s question."""
         return await self.wait_for_transform_full_async(
             target_frame, target_time, source_frame, source_time, fixed_frame, timeout
         )
 
-    def _query(self, target_frame: str, source_frame: str, time: TimeLike) -> _Query:
-        time_ns = ns_from_time(time)
-        return _Query(
-            lambda: self.can_transform_core(target_frame, source_frame, time_ns),
-            lambda: self.lookup_transform_core(target_frame, source_frame, time_ns),
-        )
-
-    def _full_query(self, args: tuple[str, int, str, int, str]) -> _Query:
-        """Return the query of the core's advanced-API arguments (see :func:`_full_args`)."""
-        return _Query(
-            lambda: self.can_transform_full_core(*args),
-            lambda: self.lookup_transform_full_core(*args),
-        )
-
     def _wait_async(
-        self, query: _Query, timeout: DurationLike | None, timeout_text: str
+        self, query: _Query | _FullQuery, timeout: DurationLike | None
     ) -> Future[TransformStamped]:
         timeout_ns = None if timeout is None else ns_from_duration(timeout)
-        return self._waits.wait_async(query.ready, query.lookup, timeout_ns, timeout_text)
+        return self._waits.wait_async(query.ready, query.lookup, timeout_ns, query.timeout_text())
 
     # ---------------------------------------------------------------------------- transform
 
@@ -700,23 +754,6 @@ def _create_frames_service(node: Node, buffer: Buffer) -> object:
 
     service: object = create_service(frame_graph, 'tf2_frames', answer)
     return service
-
-
-def _full_args(
-    target_frame: str,
-    target_time: TimeLike,
-    source_frame: str,
-    source_time: TimeLike,
-    fixed_frame: str,
-) -> tuple[str, int, str, int, str]:
-    """Return the core's advanced-API arguments, times in integer nanoseconds."""
-    return (
-        target_frame,
-        ns_from_time(target_time),
-        source_frame,
-        ns_from_time(source_time),
-        fixed_frame,
-    )
 
 
 def _check_new_type(result: StampedT, new_type: type[StampedT] | None) -> StampedT:
