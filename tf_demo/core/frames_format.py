@@ -71,6 +71,35 @@ def all_frames_as_string(frames: Sequence[FrameInfo]) -> str:
     )
 
 
+class _FrameNumbers(NamedTuple):
+    """The numbers tf2's YAML and DOT dumps print about one frame, as both print them."""
+
+    rate: str
+    """Average publishing rate (Hz), see :func:`rate_hz`."""
+    newest: str
+    """Stamp of the newest sample (s)."""
+    oldest: str
+    """Stamp of the oldest sample (s)."""
+    delay: str | None
+    """Age of the newest sample at the current time (s); None without a current time."""
+    length: str
+    """Time between the oldest and the newest sample (s)."""
+
+
+def _frame_numbers(info: FrameInfo, current_time_ns: int) -> _FrameNumbers:
+    """Return ``info``'s numbers; ``current_time_ns`` 0 means no current time (no delay)."""
+    delay = None
+    if current_time_ns != 0:
+        delay = f'{duration_to_sec(current_time_ns - info.newest_ns):.3f}'
+    return _FrameNumbers(
+        rate=f'{rate_hz(info):.3f}',
+        newest=display_time_point(info.newest_ns),
+        oldest=display_time_point(info.oldest_ns),
+        delay=delay,
+        length=f'{duration_to_sec(info.newest_ns - info.oldest_ns):.3f}',
+    )
+
+
 def all_frames_as_yaml(
     frames: Sequence[FrameInfo], *, any_frame_known: bool, current_time_ns: int = 0
 ) -> str:
@@ -85,19 +114,18 @@ def all_frames_as_yaml(
     for info in frames:
         if info.parent is None:
             continue
+        numbers = _frame_numbers(info, current_time_ns)
         parts.append(
             f'{info.child}: \n'
             f"  parent: '{info.parent}'\n"
             f"  broadcaster: '{info.authority}'\n"
-            f'  rate: {rate_hz(info):.3f}\n'
-            f'  most_recent_transform: {display_time_point(info.newest_ns)}\n'
-            f'  oldest_transform: {display_time_point(info.oldest_ns)}\n'
+            f'  rate: {numbers.rate}\n'
+            f'  most_recent_transform: {numbers.newest}\n'
+            f'  oldest_transform: {numbers.oldest}\n'
         )
-        if current_time_ns != 0:
-            delay = duration_to_sec(current_time_ns - info.newest_ns)
-            parts.append(f'  transform_delay: {delay:.3f}\n')
-        length = duration_to_sec(info.newest_ns - info.oldest_ns)
-        parts.append(f'  buffer_length: {length:.3f}\n')
+        if numbers.delay is not None:
+            parts.append(f'  transform_delay: {numbers.delay}\n')
+        parts.append(f'  buffer_length: {numbers.length}\n')
     return ''.join(parts)
 
 
@@ -117,16 +145,15 @@ def all_frames_as_dot(
     for _, info in frames:
         if info is None or info.parent is None:
             continue
+        numbers = _frame_numbers(info, current_time_ns)
         parts.append(
             f'"{info.parent}" -> "{info.child}"[label="Broadcaster: {info.authority}\\n'
-            f'Average rate: {rate_hz(info):.3f} Hz\\n'
-            f'Most recent transform: {display_time_point(info.newest_ns)} '
+            f'Average rate: {numbers.rate} Hz\\n'
+            f'Most recent transform: {numbers.newest} '
         )
-        if current_time_ns != 0:
-            age = duration_to_sec(current_time_ns - info.newest_ns)
-            parts.append(f'( {age:.3f} sec old)')
-        length = duration_to_sec(info.newest_ns - info.oldest_ns)
-        parts.append(f'\\nBuffer length: {length:.3f} sec\\n"];\n')
+        if numbers.delay is not None:
+            parts.append(f'( {numbers.delay} sec old)')
+        parts.append(f'\\nBuffer length: {numbers.length} sec\\n"];\n')
     legend_head = (
         'edge [style=invis];\n'
         ' subgraph cluster_legend { style=bold; color=black; label ="view_frames Result";\n'
