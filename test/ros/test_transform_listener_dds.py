@@ -21,7 +21,6 @@ import threading
 import time
 from typing import Any
 
-from conftest import WORLD
 import pytest
 from tf_demo import transport
 from tf_demo.core.exceptions import LookupException
@@ -116,8 +115,8 @@ def test_listener_skips_garbage_transforms_and_keeps_the_rest(ros: None) -> None
     listener = TransformListener(buffer, listener_node, spin_thread=True)
     publisher = transport.create_node('garbage_pub')
     broadcaster = TransformBroadcaster(publisher)
-    # The standalone listener decodes bytes straight into the core; under rclpy it gets messages.
-    assert listener.raw_decoding is (WORLD == 'dds')
+    # Feeding our Buffer, the listener decodes bytes straight into the core in both worlds.
+    assert listener.raw_decoding
     try:
         assert wait_for(lambda: publisher.count_subscribers('/tf') >= 1)
         now = time.time_ns()
@@ -236,8 +235,9 @@ def test_message_callbacks_skip_garbage_and_malformed_bytes(ros: None) -> None:
     )
     listener.callback(message)
     listener.static_callback(message)
-    if listener.raw_decoding:  # the standalone world's bytes path
-        listener._raw_callback(b'\x00\x01\x00\x00\xff\xff', {'publisher_gid': bytes(16)})
+    # The bytes path, with a standalone world's message info and with an rclpy one (no GUID).
+    listener._raw_callback(b'\x00\x01\x00\x00\xff\xff', {'publisher_gid': bytes(16)})
+    listener._raw_callback(b'\x00\x01\x00\x00\xff\xff', {'source_timestamp': 0})
     assert buffer.can_transform('a', 'ok', S)
     assert not buffer.can_transform('a', 'nan', S)
     listener.unregister()

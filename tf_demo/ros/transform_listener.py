@@ -28,9 +28,11 @@ Compatible with tf2_ros's Python listener (plus rolling's ``tf_topic``/``tf_stat
   writer is logged in full, the following ones as a count every few seconds (see
   :mod:`tf_demo.msgs.log_throttle`). The standalone world names the writer by its GUID; rclpy
   (Jazzy) does not tell a subscription who wrote a sample, so there the count is per topic;
-- in the standalone world the subscriptions take the serialised bytes and decode them straight
-  into the buffer's core (no message objects) through :meth:`Buffer.insert_decoded
-  <tf_demo.ros.Buffer.insert_decoded>`, the listener's hot path.
+- feeding one of our :class:`Buffer` s, the subscriptions are raw in both worlds (rclpy's
+  ``raw=True``): they take the serialised bytes and decode them straight into the buffer's core
+  (no message objects) through :meth:`Buffer.insert_decoded
+  <tf_demo.ros.Buffer.insert_decoded>`, the listener's hot path. Another buffer (tf2_ros's)
+  gets messages through its ``set_transform``.
 
 The authority recorded for each transform is ``'default_authority'``, as in tf2_ros Python.
 """
@@ -38,6 +40,7 @@ The authority recorded for each transform is ``'default_authority'``, as in tf2_
 from __future__ import annotations
 
 from collections.abc import Callable
+from collections.abc import Mapping
 import contextlib
 import threading
 from typing import Protocol
@@ -125,7 +128,7 @@ class TransformListener:
                 f'transform_listener_impl_{id(self):x}'
             )
         #: The buffer the raw callbacks decode into (None: messages go through set_transform).
-        self._raw_buffer = _raw_decoding_buffer(host, buffer)
+        self._raw_buffer = buffer if isinstance(buffer, Buffer) else None
         self.raw_decoding = raw = self._raw_buffer is not None
         group = ReentrantCallbackGroup()
 
@@ -180,13 +183,13 @@ class TransformListener:
         """Insert every transform of a ``/tf_static`` message."""
         self._insert_all(data, f"a writer on '{self._tf_static_topic}'", is_static=True)
 
-    def _raw_callback(self, data: bytes, info: dict[str, bytes]) -> None:
-        self._insert_raw(data, info['publisher_gid'], is_static=False)
+    def _raw_callback(self, data: bytes, info: Mapping[str, object]) -> None:
+        self._insert_raw(data, _writer(info, self._tf_topic), is_static=False)
 
-    def _raw_static_callback(self, data: bytes, info: dict[str, bytes]) -> None:
-        self._insert_raw(data, info['publisher_gid'], is_static=True)
+    def _raw_static_callback(self, data: bytes, info: Mapping[str, object]) -> None:
+        self._insert_raw(data, _writer(info, self._tf_static_topic), is_static=True)
 
-    def _insert_raw(self, data: bytes, writer: bytes, *, is_static: bool) -> None:
+    def _insert_raw(self, data: bytes, writer: Writer, *, is_static: bool) -> None:
         """Decode serialised TFMessage bytes into the buffer (:meth:`Buffer.insert_decoded`)."""
         buffer = self._raw_buffer
         if buffer is None:
@@ -272,17 +275,15 @@ class TransformListener:
             self._private_node = None
 
 
-def _raw_decoding_buffer(host: Node, buffer: TransformSink) -> Buffer | None:
+def _writer(info: Mapping[str, object], topic: str) -> Writer:
     """
-    Return the buffer to decode serialised bytes into: ours, on a capable node; else None.
+    Name the writer of a sample from its message info, for the throttled error log.
 
-    The standalone node class carries ``supports_raw_subscriptions = True``; rclpy's lacks it.
+    The standalone world's info carries the writer's GUID (``publisher_gid``); rclpy's (Jazzy:
+    timestamps and sequence numbers only) does not, so there a topic's writers share one name.
     """
-    if isinstance(buffer, Buffer) and (
-        getattr(type(host), 'supports_raw_subscriptions', False) is True
-    ):
-        return buffer
-    return None
+    gid = info.get('publisher_gid')
+    return gid if isinstance(gid, bytes) else f"a writer on '{topic}'"
 
 
 def _create_private_node(name: str) -> Node:
