@@ -76,7 +76,6 @@ from tf_demo.core.buffer_core import BufferCore
 from tf_demo.core.exceptions import TimeoutException
 from tf_demo.core.exceptions import TransformException
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
-from tf_demo.msgs.convert import fill_transform_stamped
 from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.msgs.log_throttle import PerWriterThrottle
 from tf_demo.msgs.log_throttle import Writer
@@ -90,7 +89,7 @@ from tf_demo.transport.clock import JumpThreshold
 from tf_demo.transport.clock import Time
 from tf_demo.transport.future import Future
 from tf_demo.transport.logging import get_logger
-from tf_demo.transport.messages import geometry_msgs
+from tf_demo.transport.messages import new_transform_stamped
 from tf_demo.transport.messages import service_module
 
 if TYPE_CHECKING:
@@ -263,9 +262,8 @@ def _full_query(  # noqa: PLR0917 - tf2_ros argument order
 
 def _message(target_frame: str, source_frame: str, result: TransformResult) -> TransformStamped:
     """Return the core's ``result`` as the world's ``geometry_msgs/TransformStamped``."""
-    msg: TransformStamped = geometry_msgs.TransformStamped()
-    return fill_transform_stamped(
-        msg, target_frame, source_frame, result.stamp_ns, result.translation, result.rotation
+    return new_transform_stamped(
+        target_frame, source_frame, result.stamp_ns, result.translation, result.rotation
     )
 
 

@@ -47,6 +47,7 @@ from typing import Protocol
 from typing import TYPE_CHECKING
 
 from tf_demo.msgs import cdr
+from tf_demo.msgs import tf2_msgs as standalone_tf2_msgs
 from tf_demo.msgs.log_throttle import PerWriterThrottle
 from tf_demo.ros.buffer import Buffer
 from tf_demo.transport import create_node
@@ -127,9 +128,8 @@ class TransformListener:
             host = self._private_node = _create_private_node(
                 f'transform_listener_impl_{id(self):x}'
             )
-        #: The buffer the raw callbacks decode into (None: messages go through set_transform).
-        self._raw_buffer = buffer if isinstance(buffer, Buffer) else None
-        self.raw_decoding = raw = self._raw_buffer is not None
+        #: Whether the subscriptions take serialised bytes (feeding one of our buffers).
+        self.raw_decoding = raw = isinstance(buffer, Buffer)
         group = ReentrantCallbackGroup()
 
         def subscribe(
@@ -191,21 +191,23 @@ class TransformListener:
 
     def _insert_raw(self, data: bytes, writer: Writer, *, is_static: bool) -> None:
         """Decode serialised TFMessage bytes into the buffer (:meth:`Buffer.insert_decoded`)."""
-        buffer = self._raw_buffer
-        if buffer is None:
-            return
-        buffer.note_feeder_thread()
+        buffer = self.buffer
         try:
+            if not isinstance(buffer, Buffer):  # replaced after construction, as tf2_ros allows
+                message = cdr.deserialize(standalone_tf2_msgs.TFMessage, data)
+                self._insert_all(message, writer, is_static=is_static)
+                return
             transforms = cdr.decode_tf_message_transforms(data)
         except cdr.CdrError as error:
             self._log_throttled(writer, f'Dropping a malformed TFMessage: {error}')
             return
+        buffer.note_feeder_thread()
         for parent, child, failure in buffer.insert_decoded(
             transforms, DEFAULT_AUTHORITY, writer, is_static
         ):
             self._log_insert_failure(writer, parent, child, failure)
 
-    def _insert_all(self, data: TFMessage, writer: str, *, is_static: bool) -> None:
+    def _insert_all(self, data: TFMessage, writer: Writer, *, is_static: bool) -> None:
         note = getattr(self.buffer, 'note_feeder_thread', None)
         if note is not None:
             note()

@@ -1,0 +1,100 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""new_transform_stamped in the rclpy world: rclpy's own message, slot for slot, byte for byte."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+pytestmark = pytest.mark.rclpy_world
+
+CASES = [
+    ('map', 'base_link', 1_700_000_000_123_456_789, (1.0, -2.5, 3e-9), (0.0, 0.0, 0.6, 0.8)),
+    ('', 'ç/名前', 0, (0, 0, 0), (0, 0, 0, 1)),  # ints become floats, as the setters want
+    ('a', 'b', -1, (float('inf'), -0.0, 1e308), (1.0, 0.0, 0.0, 0.0)),
+    ('odom', 'x' * 300, 2**31 * 10**9 - 1, (0.1, 0.2, 0.3), (0.5, 0.5, 0.5, 0.5)),
+]
+
+
+def _reference(parent: str, child: str, stamp_ns: int, t: tuple[float, ...], q: tuple[float, ...]):
+    """The same message made the ordinary way: rclpy's constructors and setters."""
+    from geometry_msgs.msg import TransformStamped
+
+    msg = TransformStamped()
+    msg.header.stamp.sec, msg.header.stamp.nanosec = divmod(stamp_ns, 10**9)
+    msg.header.frame_id = parent
+    msg.child_frame_id = child
+    v = msg.transform.translation
+    v.x, v.y, v.z = (float(value) for value in t)
+    r = msg.transform.rotation
+    r.x, r.y, r.z, r.w = (float(value) for value in q)
+    return msg
+
+
+def _slots(message: object) -> object:
+    """Every slot of a message tree, with the Python type of each leaf."""
+    if not hasattr(type(message), '_fields_and_field_types'):
+        return (type(message).__name__, message)
+    return {slot: _slots(getattr(message, slot)) for slot in type(message).__slots__}
+
+
+@pytest.mark.parametrize('case', CASES, ids=range(len(CASES)))
+def test_the_fast_message_is_rclpys_own_slot_for_slot(case: tuple) -> None:
+    from geometry_msgs.msg import TransformStamped
+    from rclpy.serialization import serialize_message
+    from tf_demo.transport.messages import new_transform_stamped
+
+    built = new_transform_stamped(*case)
+    reference = _reference(*case)
+    assert type(built) is TransformStamped
+    assert built == reference
+    assert _slots(built) == _slots(reference)
+    assert serialize_message(built) == serialize_message(reference)
+
+
+def test_a_stamp_out_of_range_is_refused_as_the_standalone_world_refuses_it() -> None:
+    from tf_demo.transport.messages import new_transform_stamped
+
+    with pytest.raises(ValueError, match='out of the range of builtin_interfaces/Time'):
+        new_transform_stamped('a', 'b', 2**31 * 10**9, (0, 0, 0), (0, 0, 0, 1))
+
+
+def test_with_field_checks_on_the_message_checks_later_assignments() -> None:
+    """ROS_PYTHON_CHECK_FIELDS=1: the built objects check fields as constructed ones do."""
+    code = (
+        'from tf_demo.transport.messages import new_transform_stamped\n'
+        'm = new_transform_stamped("a", "b", 5, (1, 2, 3), (0, 0, 0, 1))\n'
+        'assert m._check_fields and m.header.stamp._check_fields\n'
+        'assert m.transform.rotation._check_fields\n'
+        'try:\n'
+        '    m.transform.translation.x = "not a float"\n'
+        'except AssertionError as error:\n'
+        '    print("refused:", error)\n'
+    )
+    env = dict(os.environ, ROS_PYTHON_CHECK_FIELDS='1')
+    result = subprocess.run(
+        [sys.executable, '-c', code],
+        check=False,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert result.returncode == 0, result.stderr
+    assert "refused: The 'x' field must be of type 'float'" in result.stdout
