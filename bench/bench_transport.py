@@ -21,6 +21,10 @@ Benchmark of the standalone (DDS) transport, across real processes on loopback.
    (target 0) and the listener process' CPU use (target < 100 % of one core), for a plain
    decoding subscription and for tf_demo's TransformListener filling a Buffer.
 3. One-way latency at 1 kHz, 1 transform, stamp = CLOCK_REALTIME at publish (target p50 <= 200 us).
+4. The TransformListener's capacity: 50-transform messages at rising rates (pre-encoded by the
+   source, so the source is never the limit) until one is lost; the highest rate received with 0
+   loss, in transforms/s, and the listener's CPU there (target >= 200,000 transforms/s on one
+   core).
 
 Run: ``.venv/bin/python bench/bench_transport.py [--seconds 5]``. Uses ``ROS_DOMAIN_ID`` if set
 (else 231) with loopback-only discovery.
@@ -146,13 +150,24 @@ def run_source(args: argparse.Namespace) -> None:
     time.sleep(0.2)
     template = tf_message(args.transforms)
     period = 1.0 / args.rate
+    encoded: list[bytes] = []
+    if args.pre_encoded:  # stamps 1 ms apart from now; publishing bytes costs the source little
+        start_ns = time.time_ns()
+        for index in range(args.count):
+            sec, nanosec = divmod(start_ns + index * 1_000_000, 1_000_000_000)
+            for transform in template.transforms:
+                transform.header.stamp.sec, transform.header.stamp.nanosec = sec, nanosec
+            encoded.append(cdr.serialize(template))
     next_time = time.monotonic()
     for index in range(args.count):
-        sec, nanosec = divmod(time.time_ns(), 1_000_000_000)
-        for transform in template.transforms:
-            transform.header.stamp.sec, transform.header.stamp.nanosec = sec, nanosec
-        template.transforms[0].transform.translation.x = float(index)
-        publisher.publish(template)
+        if encoded:
+            publisher.publish(encoded[index])
+        else:
+            sec, nanosec = divmod(time.time_ns(), 1_000_000_000)
+            for transform in template.transforms:
+                transform.header.stamp.sec, transform.header.stamp.nanosec = sec, nanosec
+            template.transforms[0].transform.translation.x = float(index)
+            publisher.publish(template)
         next_time += period
         delay = next_time - time.monotonic()
         if delay > 0:
@@ -240,6 +255,40 @@ def bench_ingest(env: dict[str, str], seconds: float, *, listener: bool) -> None
     )
 
 
+def bench_listener_capacity(env: dict[str, str], seconds: float) -> None:
+    """Raise the rate of 50-transform messages until the TransformListener loses one."""
+    best: tuple[int, float] | None = None
+    for rate in (1000, 2000, 3000, 4000, 5000, 6000, 8000):
+        count = int(rate * seconds)
+        sink_args = ['--role', 'sink', '--expect', str(count), '--timeout', str(seconds + 60)]
+        sink = child(env, *sink_args, '--listener')
+        assert sink.stdout is not None
+        sink.stdout.readline()
+        source = child(
+            env, '--role', 'source', '--count', str(count), '--rate', str(rate),
+            '--transforms', '50', '--pre-encoded',
+        )  # fmt: skip
+        sent = last_json(source, seconds + 120).get('sent', 0)
+        result = last_json(sink, seconds + 120)
+        received = int(result.get('received', 0))
+        cpu = result.get('cpu_percent', 0.0)
+        print(
+            f'  listener at {rate} msg/s x 50 = {50 * rate} transforms/s: received '
+            f'{received}/{int(sent)}, CPU {cpu:.0f} % of one core'
+        )
+        if received < sent:
+            break
+        best = (50 * rate, cpu)
+    if best is None:
+        print('TransformListener capacity: lost messages already at 50,000 transforms/s')
+        return
+    verdict = 'ok' if best[0] >= 200_000 else 'MISSED'
+    print(
+        f'TransformListener capacity: {best[0]} transforms/s with 0 loss at {best[1]:.0f} % of '
+        f'one core (target >= 200,000 transforms/s) {verdict}'
+    )
+
+
 def bench_latency(env: dict[str, str], seconds: float) -> None:
     count = int(1000 * seconds)
     sink = child(
@@ -270,8 +319,11 @@ def main() -> None:
     parser.add_argument('--timeout', type=float, default=60.0)
     parser.add_argument('--latency', action='store_true')
     parser.add_argument('--listener', action='store_true')
+    parser.add_argument('--pre-encoded', action='store_true')
     parser.add_argument(
-        '--only', choices=['publish', 'ingest', 'listener', 'latency'], help='run one benchmark'
+        '--only',
+        choices=['publish', 'ingest', 'listener', 'latency', 'capacity'],
+        help='run one benchmark',
     )
     args = parser.parse_args()
     if args.role == 'sink':
@@ -297,6 +349,8 @@ def main() -> None:
         bench_ingest(env, args.seconds, listener=True)
     if args.only in (None, 'latency'):
         bench_latency(env, args.seconds)
+    if args.only in (None, 'capacity'):
+        bench_listener_capacity(env, min(args.seconds, 3.0))
 
 
 if __name__ == '__main__':
