@@ -442,7 +442,8 @@ class Buffer:
         self, target_frame: str, source_frame: str, time: TimeLike
     ) -> TransformStamped:
         """Look up target_T_source now, without waiting; raises tf2's exceptions."""
-        return _query(self.core, target_frame, source_frame, time).lookup()
+        result = self.core.lookup_transform(target_frame, source_frame, ns_from_time(time))
+        return _message(target_frame, source_frame, result)
 
     def lookup_transform_full_core(
         self,
@@ -461,7 +462,9 @@ class Buffer:
         self, target_frame: str, source_frame: str, time: TimeLike
     ) -> tuple[bool, str]:
         """Return ``(possible, error_text)`` now, without waiting."""
-        return _query(self.core, target_frame, source_frame, time).answer()
+        return self.core.can_transform(
+            target_frame, source_frame, ns_from_time(time), return_debug_tuple=True
+        )
 
     def can_transform_full_core(
         self,
