@@ -19,6 +19,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from typing import Any
 
 import pytest
 
@@ -47,7 +48,7 @@ def _reference(parent: str, child: str, stamp_ns: int, t: tuple[float, ...], q: 
     return msg
 
 
-def _slots(message: object) -> object:
+def _slots(message: Any) -> object:  # an rclpy message (no stubs) or a leaf value
     """Every slot of a message tree, with the Python type of each leaf."""
     if not hasattr(type(message), '_fields_and_field_types'):
         return (type(message).__name__, message)
@@ -55,7 +56,7 @@ def _slots(message: object) -> object:
 
 
 @pytest.mark.parametrize('case', CASES, ids=range(len(CASES)))
-def test_the_fast_message_is_rclpys_own_slot_for_slot(case: tuple) -> None:
+def test_the_fast_message_is_rclpys_own_slot_for_slot(case: tuple[object, ...]) -> None:
     from geometry_msgs.msg import TransformStamped
     from rclpy.serialization import serialize_message
     from tf_demo.transport.messages import new_transform_stamped
