@@ -25,7 +25,8 @@ import pytest
 
 pytestmark = pytest.mark.rclpy_world
 
-CASES = [
+Case = tuple[str, str, int, tuple[float, ...], tuple[float, ...]]
+CASES: list[Case] = [
     ('map', 'base_link', 1_700_000_000_123_456_789, (1.0, -2.5, 3e-9), (0.0, 0.0, 0.6, 0.8)),
     ('', 'ç/名前', 0, (0, 0, 0), (0, 0, 0, 1)),  # ints become floats, as the setters want
     ('a', 'b', -1, (float('inf'), -0.0, 1e308), (1.0, 0.0, 0.0, 0.0)),
@@ -56,7 +57,7 @@ def _slots(message: Any) -> object:  # an rclpy message (no stubs) or a leaf val
 
 
 @pytest.mark.parametrize('case', CASES, ids=range(len(CASES)))
-def test_the_fast_message_is_rclpys_own_slot_for_slot(case: tuple[object, ...]) -> None:
+def test_the_fast_message_is_rclpys_own_slot_for_slot(case: Case) -> None:
     from geometry_msgs.msg import TransformStamped
     from rclpy.serialization import serialize_message
     from tf_demo.transport.messages import new_transform_stamped
