@@ -34,14 +34,16 @@ from collections.abc import Callable
 import json
 import os
 from pathlib import Path
-import resource
 import statistics
-import subprocess
 import sys
 import time
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+
+from _flow import FlowMeter
+from _flow import last_json
+from _flow import start_role
 
 TOPIC = '/tf'
 S = 1_000_000_000
@@ -55,11 +57,6 @@ TREE = (
     ('head', 'camera_link', True),
 )
 STAMPS = 200  # dynamic samples per link, 10 ms apart
-
-
-def cpu_seconds() -> float:
-    usage = resource.getrusage(resource.RUSAGE_SELF)
-    return usage.ru_utime + usage.ru_stime
 
 
 def transform_msg(parent: str, child: str, stamp_ns: int, x: float) -> Any:
@@ -216,72 +213,43 @@ def run_listener(args: argparse.Namespace) -> None:
 
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer, node)
-    received = 0
-    first_cpu = first_wall = last_cpu = last_wall = 0.0
-
-    def count() -> None:
-        nonlocal received, first_cpu, first_wall, last_cpu, last_wall
-        if received == 0:
-            first_cpu, first_wall = cpu_seconds(), time.monotonic()
-        received += 1
-        if received % 100 == 0:
-            last_cpu, last_wall = cpu_seconds(), time.monotonic()
-
+    meter = FlowMeter()
     subscription = listener.tf_sub
     insert = subscription.callback
     if args.impl == 'ours':  # raw: the callback takes (bytes, message info)
 
         def counted_raw(data: bytes, info: dict[str, object]) -> None:
             insert(data, info)
-            count()
+            meter.count()
 
         subscription.callback = counted_raw
     else:
 
         def counted(message: object) -> None:
             insert(message)
-            count()
+            meter.count()
 
         subscription.callback = counted
     executor = SingleThreadedExecutor()
     executor.add_node(node)
     print('ready', flush=True)
-    deadline = time.monotonic() + args.timeout
-    last_count, last_change = 0, time.monotonic()
-    while received < args.count and time.monotonic() < deadline:
-        executor.spin_once(timeout_sec=0.1)
-        if received != last_count:
-            last_count, last_change = received, time.monotonic()
-        elif received and time.monotonic() - last_change > 2.0:
-            break
-    wall = last_wall - first_wall
-    cpu = last_cpu - first_cpu
+    meter.spin_until(lambda: executor.spin_once(timeout_sec=0.1), args.count, args.timeout)
     frames = len(buffer.all_frames_as_yaml().split('parent:')) - 1
-    print(json.dumps({'received': received, 'cpu_s': cpu, 'wall_s': wall, 'frames': frames}))
+    result = {'received': meter.received, 'cpu_s': meter.cpu_s(), 'wall_s': meter.wall_s()}
+    print(json.dumps({**result, 'frames': frames}))
     rclpy.shutdown()
-
-
-def child(env: dict[str, str], *args: str) -> subprocess.Popen[str]:
-    return subprocess.Popen(
-        [sys.executable, __file__, *args], env=env, stdout=subprocess.PIPE, text=True
-    )
-
-
-def last_json(process: subprocess.Popen[str], timeout: float) -> dict[str, float]:
-    out, _ = process.communicate(timeout=timeout)
-    lines = [line for line in out.splitlines() if line.startswith('{')]
-    return json.loads(lines[-1]) if lines else {}
 
 
 def ingest(env: dict[str, str], impl: str, seconds: float) -> dict[str, float]:
     count = int(1000 * seconds)
-    listener = child(
+    listener = start_role(
+        __file__,
         env, '--role', 'listener', '--impl', impl, '--count', str(count),
         '--timeout', str(seconds + 60),
     )  # fmt: skip
     assert listener.stdout is not None
     listener.stdout.readline()
-    publisher = child(env, '--role', 'publisher', '--count', str(count))
+    publisher = start_role(__file__, env, '--role', 'publisher', '--count', str(count))
     sent = last_json(publisher, seconds + 90).get('sent', 0)
     result = last_json(listener, seconds + 90)
     result['sent'] = sent

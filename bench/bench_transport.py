@@ -36,14 +36,15 @@ import argparse
 import json
 import os
 from pathlib import Path
-import resource
 import statistics
-import subprocess
 import sys
 import time
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
+from _flow import FlowMeter
+from _flow import last_json
+from _flow import start_role
 from tf_demo.msgs import cdr
 from tf_demo.msgs import geometry_msgs
 from tf_demo.msgs import tf2_msgs
@@ -68,11 +69,6 @@ def tf_message(transforms: int, stamp_ns: int = 0, first_x: float = 0.0) -> tf2_
     return tf2_msgs.TFMessage(transforms=items)
 
 
-def cpu_seconds() -> float:
-    usage = resource.getrusage(resource.RUSAGE_SELF)
-    return usage.ru_utime + usage.ru_stime
-
-
 def percentile(values: list[float], fraction: float) -> float:
     ordered = sorted(values)
     return ordered[min(len(ordered) - 1, int(fraction * len(ordered)))]
@@ -85,17 +81,11 @@ def run_sink(args: argparse.Namespace) -> None:
     """Count (and time) messages until ``--expect`` arrived or the source went quiet."""
     dds_backend.init()
     node = dds_backend.DdsNode('bench_sink')
-    received = 0
+    meter = FlowMeter()
     latencies_us: list[float] = []
-    first_cpu = first_wall = last_cpu = last_wall = 0.0
 
     def on_message(msg: tf2_msgs.TFMessage | bytes) -> None:  # bytes: the listener's raw /tf
-        nonlocal received, first_cpu, first_wall, last_cpu, last_wall
-        if received == 0:
-            first_cpu, first_wall = cpu_seconds(), time.monotonic()
-        received += 1
-        if received % 100 == 0:
-            last_cpu, last_wall = cpu_seconds(), time.monotonic()
+        meter.count()
         if args.latency and isinstance(msg, tf2_msgs.TFMessage):  # never with --listener
             stamp = msg.transforms[0].header.stamp
             sent_ns = stamp.sec * 1_000_000_000 + stamp.nanosec
@@ -121,18 +111,10 @@ def run_sink(args: argparse.Namespace) -> None:
     executor = dds_backend.SingleThreadedExecutor()
     executor.add_node(node)
     print('ready', flush=True)
-    deadline = time.monotonic() + args.timeout
-    last_count, last_change = 0, time.monotonic()
-    while received < args.expect and time.monotonic() < deadline:
-        executor.spin_once(timeout_sec=0.1)
-        if received != last_count:
-            last_count, last_change = received, time.monotonic()
-        elif received and time.monotonic() - last_change > 2.0:
-            break
+    meter.spin_until(lambda: executor.spin_once(timeout_sec=0.1), args.expect, args.timeout)
     # CPU share while messages were flowing (first to last hundredth message).
-    wall = last_wall - first_wall
-    cpu = last_cpu - first_cpu
-    result = {'received': received, 'cpu_percent': 100.0 * cpu / wall if wall else 0.0}
+    wall, cpu = meter.wall_s(), meter.cpu_s()
+    result = {'received': meter.received, 'cpu_percent': 100.0 * cpu / wall if wall else 0.0}
     if latencies_us:
         result['p50_us'] = percentile(latencies_us, 0.50)
         result['p99_us'] = percentile(latencies_us, 0.99)
@@ -180,21 +162,11 @@ def run_source(args: argparse.Namespace) -> None:
 # -- orchestration ------------------------------------------------------------------------------
 
 
-def child(env: dict[str, str], *args: str) -> subprocess.Popen[str]:
-    return subprocess.Popen(
-        [sys.executable, __file__, *args], env=env, stdout=subprocess.PIPE, text=True
-    )
-
-
-def last_json(process: subprocess.Popen[str], timeout: float) -> dict[str, float]:
-    out, _ = process.communicate(timeout=timeout)
-    lines = [line for line in out.splitlines() if line.startswith('{')]
-    return json.loads(lines[-1]) if lines else {}
-
-
 def bench_publish_cost(env: dict[str, str], calls: int) -> None:
     raw_calls = min(calls, 5000)
-    sink = child(env, '--role', 'sink', '--expect', str(calls + raw_calls), '--timeout', '120')
+    sink = start_role(
+        __file__, env, '--role', 'sink', '--expect', str(calls + raw_calls), '--timeout', '120'
+    )
     assert sink.stdout is not None
     sink.stdout.readline()
     dds_backend.init()
@@ -238,11 +210,20 @@ def bench_publish_cost(env: dict[str, str], calls: int) -> None:
 def bench_ingest(env: dict[str, str], seconds: float, *, listener: bool) -> None:
     count = int(1000 * seconds)
     sink_args = ['--role', 'sink', '--expect', str(count), '--timeout', str(seconds + 30)]
-    sink = child(env, *sink_args, *(['--listener'] if listener else []))
+    sink = start_role(__file__, env, *sink_args, *(['--listener'] if listener else []))
     assert sink.stdout is not None
     sink.stdout.readline()
-    source = child(
-        env, '--role', 'source', '--count', str(count), '--rate', '1000', '--transforms', '50'
+    source = start_role(
+        __file__,
+        env,
+        '--role',
+        'source',
+        '--count',
+        str(count),
+        '--rate',
+        '1000',
+        '--transforms',
+        '50',
     )
     sent = last_json(source, seconds + 60).get('sent', 0)
     result = last_json(sink, seconds + 60)
@@ -261,11 +242,11 @@ def bench_listener_capacity(env: dict[str, str], seconds: float) -> None:
     for rate in (1000, 2000, 3000, 4000, 5000, 6000, 8000):
         count = int(rate * seconds)
         sink_args = ['--role', 'sink', '--expect', str(count), '--timeout', str(seconds + 60)]
-        sink = child(env, *sink_args, '--listener')
+        sink = start_role(__file__, env, *sink_args, '--listener')
         assert sink.stdout is not None
         sink.stdout.readline()
-        source = child(
-            env, '--role', 'source', '--count', str(count), '--rate', str(rate),
+        source = start_role(
+            __file__, env, '--role', 'source', '--count', str(count), '--rate', str(rate),
             '--transforms', '50', '--pre-encoded',
         )  # fmt: skip
         sent = last_json(source, seconds + 120).get('sent', 0)
@@ -291,13 +272,30 @@ def bench_listener_capacity(env: dict[str, str], seconds: float) -> None:
 
 def bench_latency(env: dict[str, str], seconds: float) -> None:
     count = int(1000 * seconds)
-    sink = child(
-        env, '--role', 'sink', '--expect', str(count), '--latency', '--timeout', str(seconds + 30)
+    sink = start_role(
+        __file__,
+        env,
+        '--role',
+        'sink',
+        '--expect',
+        str(count),
+        '--latency',
+        '--timeout',
+        str(seconds + 30),
     )
     assert sink.stdout is not None
     sink.stdout.readline()
-    source = child(
-        env, '--role', 'source', '--count', str(count), '--rate', '1000', '--transforms', '1'
+    source = start_role(
+        __file__,
+        env,
+        '--role',
+        'source',
+        '--count',
+        str(count),
+        '--rate',
+        '1000',
+        '--transforms',
+        '1',
     )
     last_json(source, seconds + 60)
     result = last_json(sink, seconds + 60)

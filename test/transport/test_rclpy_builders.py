@@ -22,10 +22,11 @@ import sys
 from typing import Any
 
 import pytest
+from tf_demo.core.buffer_core import TransformResult
 
 pytestmark = pytest.mark.rclpy_world
 
-Case = tuple[str, str, int, tuple[float, ...], tuple[float, ...]]
+Case = tuple[str, str, int, tuple[float, float, float], tuple[float, float, float, float]]
 CASES: list[Case] = [
     ('map', 'base_link', 1_700_000_000_123_456_789, (1.0, -2.5, 3e-9), (0.0, 0.0, 0.6, 0.8)),
     ('', 'ç/名前', 0, (0, 0, 0), (0, 0, 0, 1)),  # ints become floats, as the setters want
@@ -62,7 +63,8 @@ def test_the_fast_message_is_rclpys_own_slot_for_slot(case: Case) -> None:
     from rclpy.serialization import serialize_message
     from tf_demo.transport.messages import new_transform_stamped
 
-    built = new_transform_stamped(*case)
+    target, source, stamp_ns, translation, rotation = case
+    built = new_transform_stamped(target, source, TransformResult(translation, rotation, stamp_ns))
     reference = _reference(*case)
     assert type(built) is TransformStamped
     assert built == reference
@@ -74,14 +76,15 @@ def test_a_stamp_out_of_range_is_refused_as_the_standalone_world_refuses_it() ->
     from tf_demo.transport.messages import new_transform_stamped
 
     with pytest.raises(ValueError, match='out of the range of builtin_interfaces/Time'):
-        new_transform_stamped('a', 'b', 2**31 * 10**9, (0, 0, 0), (0, 0, 0, 1))
+        new_transform_stamped('a', 'b', TransformResult((0, 0, 0), (0, 0, 0, 1), 2**31 * 10**9))
 
 
 def test_with_field_checks_on_the_message_checks_later_assignments() -> None:
     """ROS_PYTHON_CHECK_FIELDS=1: the built objects check fields as constructed ones do."""
     code = (
         'from tf_demo.transport.messages import new_transform_stamped\n'
-        'm = new_transform_stamped("a", "b", 5, (1, 2, 3), (0, 0, 0, 1))\n'
+        'from tf_demo.core.buffer_core import TransformResult\n'
+        'm = new_transform_stamped("a", "b", TransformResult((1, 2, 3), (0, 0, 0, 1), 5))\n'
         'assert m._check_fields and m.header.stamp._check_fields\n'
         'assert m.transform.rotation._check_fields\n'
         'try:\n'

@@ -93,7 +93,6 @@ from tf_demo.transport.messages import new_transform_stamped
 from tf_demo.transport.messages import service_module
 
 if TYPE_CHECKING:
-    from tf_demo.core.buffer_core import TransformResult
     from tf_demo.core.math3d import Vec3
     from tf_demo.msgs.cdr import TransformTuple
     from tf_demo.msgs.convert import HeaderLike
@@ -196,7 +195,7 @@ class _Query(NamedTuple):
     def lookup(self) -> TransformStamped:
         """Look the transform up now; raises tf2's exceptions."""
         result = self.core.lookup_transform(self.target_frame, self.source_frame, self.time_ns)
-        return _message(self.target_frame, self.source_frame, result)
+        return new_transform_stamped(self.target_frame, self.source_frame, result)
 
     def timeout_text(self) -> str:
         """Return the text of the ``TimeoutException`` of an awaitable wait that timed out."""
@@ -223,7 +222,9 @@ class _FullQuery(NamedTuple):
     def lookup(self) -> TransformStamped:
         """Look the transform up now; raises tf2's exceptions."""
         target_frame, _, source_frame, _, _ = self.args
-        return _message(target_frame, source_frame, self.core.lookup_transform_full(*self.args))
+        return new_transform_stamped(
+            target_frame, source_frame, self.core.lookup_transform_full(*self.args)
+        )
 
     def timeout_text(self) -> str:
         """Return the text of the ``TimeoutException`` of an awaitable wait that timed out."""
@@ -257,13 +258,6 @@ def _full_query(  # noqa: PLR0917 - tf2_ros argument order
             ns_from_time(source_time),
             fixed_frame,
         ),
-    )
-
-
-def _message(target_frame: str, source_frame: str, result: TransformResult) -> TransformStamped:
-    """Return the core's ``result`` as the world's ``geometry_msgs/TransformStamped``."""
-    return new_transform_stamped(
-        target_frame, source_frame, result.stamp_ns, result.translation, result.rotation
     )
 
 
@@ -443,7 +437,7 @@ class Buffer:
     ) -> TransformStamped:
         """Look up target_T_source now, without waiting; raises tf2's exceptions."""
         result = self.core.lookup_transform(target_frame, source_frame, ns_from_time(time))
-        return _message(target_frame, source_frame, result)
+        return new_transform_stamped(target_frame, source_frame, result)
 
     def lookup_transform_full_core(
         self,

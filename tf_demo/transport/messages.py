@@ -23,11 +23,11 @@ buffer's lookups answer with it).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 import importlib
 from types import ModuleType
 from typing import TYPE_CHECKING
 
+from tf_demo.core.buffer_core import TransformResult
 from tf_demo.transport.backend import rclpy_world
 
 __all__ = [
@@ -70,15 +70,16 @@ if TYPE_CHECKING or not rclpy_world():
     from tf_demo.msgs.convert import fill_transform_stamped
 
     def new_transform_stamped(
-        parent: str,
-        child: str,
-        stamp_ns: int,
-        translation: Sequence[float],
-        rotation: Sequence[float],
+        target: str, source: str, result: TransformResult
     ) -> geometry_msgs.TransformStamped:
-        """Return a TransformStamped of ``parent`` -> ``child`` at ``stamp_ns`` (x, y, z, w)."""
+        """Return the core's ``result`` as a TransformStamped of ``target`` <- ``source``."""
         return fill_transform_stamped(
-            geometry_msgs.TransformStamped(), parent, child, stamp_ns, translation, rotation
+            geometry_msgs.TransformStamped(),
+            target,
+            source,
+            result.stamp_ns,
+            result.translation,
+            result.rotation,
         )
 
 else:  # pragma: no cover - needs a ROS 2 installation

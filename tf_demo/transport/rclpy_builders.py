@@ -28,8 +28,9 @@ compares them slot by slot. The values are what the setters would accept anyway 
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 import sys
+from typing import Protocol
+from typing import TypeVar
 
 from builtin_interfaces.msg import Time
 from geometry_msgs.msg import Quaternion
@@ -37,7 +38,17 @@ from geometry_msgs.msg import Transform
 from geometry_msgs.msg import TransformStamped
 from geometry_msgs.msg import Vector3
 from std_msgs.msg import Header
+from tf_demo.core.buffer_core import TransformResult
 from tf_demo.msgs.convert import stamp_fields_from_ns
+
+
+class _GeneratedMessage(Protocol):
+    """What rosidl_generator_py gives every message object: its field-check switch."""
+
+    _check_fields: bool
+
+
+M = TypeVar('M', bound=_GeneratedMessage)
 
 
 def _checks_fields(cls: type) -> bool:
@@ -54,45 +65,29 @@ _CHECK_TRANSFORM = _CHECK[Transform]
 _CHECK_STAMPED = _checks_fields(TransformStamped)
 
 
-def new_transform_stamped(
-    parent: str,
-    child: str,
-    stamp_ns: int,
-    translation: Sequence[float],
-    rotation: Sequence[float],
-) -> TransformStamped:
-    """
-    Return rclpy's TransformStamped of ``parent`` -> ``child`` at ``stamp_ns``.
+def _blank(cls: type[M], check_fields: bool) -> M:
+    """Return an instance of rclpy's message class ``cls`` with no field set yet."""
+    message = cls.__new__(cls)
+    message._check_fields = check_fields
+    return message
 
-    :param translation: ``(x, y, z)``, as the core answers.
-    :param rotation: quaternion as ``(x, y, z, w)``.
-    :raises ValueError: the stamp does not fit ``builtin_interfaces/Time``.
-    """
-    tx, ty, tz = translation
-    qx, qy, qz, qw = rotation
-    sec, nanosec = stamp_fields_from_ns(stamp_ns)
-    stamp = Time.__new__(Time)
-    stamp._check_fields = _CHECK_TIME
-    stamp._sec = sec
-    stamp._nanosec = nanosec
-    header = Header.__new__(Header)
-    header._check_fields = _CHECK_HEADER
-    header._stamp = stamp
-    header._frame_id = str(parent)
-    vector = Vector3.__new__(Vector3)
-    vector._check_fields = _CHECK_VECTOR3
+
+def new_transform_stamped(target: str, source: str, result: TransformResult) -> TransformStamped:
+    """Return the core's ``result`` as rclpy's TransformStamped of ``target`` <- ``source``."""
+    sec, nanosec = stamp_fields_from_ns(result.stamp_ns)
+    tx, ty, tz = result.translation
+    qx, qy, qz, qw = result.rotation
+    stamp = _blank(Time, _CHECK_TIME)
+    stamp._sec, stamp._nanosec = sec, nanosec
+    header = _blank(Header, _CHECK_HEADER)
+    header._stamp, header._frame_id = stamp, str(target)
+    vector = _blank(Vector3, _CHECK_VECTOR3)
     vector._x, vector._y, vector._z = float(tx), float(ty), float(tz)
-    quaternion = Quaternion.__new__(Quaternion)
-    quaternion._check_fields = _CHECK_QUATERNION
+    quaternion = _blank(Quaternion, _CHECK_QUATERNION)
     quaternion._x, quaternion._y = float(qx), float(qy)
     quaternion._z, quaternion._w = float(qz), float(qw)
-    transform = Transform.__new__(Transform)
-    transform._check_fields = _CHECK_TRANSFORM
-    transform._translation = vector
-    transform._rotation = quaternion
-    message = TransformStamped.__new__(TransformStamped)
-    message._check_fields = _CHECK_STAMPED
-    message._header = header
-    message._child_frame_id = str(child)
-    message._transform = transform
+    transform = _blank(Transform, _CHECK_TRANSFORM)
+    transform._translation, transform._rotation = vector, quaternion
+    message = _blank(TransformStamped, _CHECK_STAMPED)
+    message._header, message._child_frame_id, message._transform = header, str(source), transform
     return message
