@@ -207,55 +207,50 @@ def bench_publish_cost(env: dict[str, str], calls: int) -> None:
     )
 
 
-def bench_ingest(env: dict[str, str], seconds: float, *, listener: bool) -> None:
-    count = int(1000 * seconds)
-    sink_args = ['--role', 'sink', '--expect', str(count), '--timeout', str(seconds + 30)]
-    sink = start_role(__file__, env, *sink_args, *(['--listener'] if listener else []))
+def run_pair(
+    sink_args: list[str], source_args: list[str], timeout: float
+) -> tuple[int, dict[str, float]]:
+    """Start a sink, then a source; return what the source sent and the sink's verdict."""
+    env = dict(os.environ)
+    sink = start_role(__file__, env, '--role', 'sink', '--timeout', str(timeout), *sink_args)
     assert sink.stdout is not None
     sink.stdout.readline()
-    source = start_role(
-        __file__,
-        env,
-        '--role',
-        'source',
-        '--count',
-        str(count),
-        '--rate',
-        '1000',
-        '--transforms',
-        '50',
+    source = start_role(__file__, env, '--role', 'source', *source_args)
+    sent = int(last_json(source, timeout + 60).get('sent', 0))
+    return sent, last_json(sink, timeout + 60)
+
+
+def bench_ingest(seconds: float, *, listener: bool) -> None:
+    count = int(1000 * seconds)
+    sent, result = run_pair(
+        ['--expect', str(count), *(['--listener'] if listener else [])],
+        ['--count', str(count), '--rate', '1000', '--transforms', '50'],
+        seconds + 30,
     )
-    sent = last_json(source, seconds + 60).get('sent', 0)
-    result = last_json(sink, seconds + 60)
     what = 'TransformListener -> Buffer' if listener else 'DdsNode subscription (decode)'
     lost = int(sent - result.get('received', 0))
     print(
         f'ingest 1000 msg/s x 50 transforms, {what}: received {result.get("received", 0)}/'
-        f'{int(sent)} (lost {lost}, target 0), listener CPU '
+        f'{sent} (lost {lost}, target 0), listener CPU '
         f'{result.get("cpu_percent", 0.0):.0f} % of one core (target < 100 %)'
     )
 
 
-def bench_listener_capacity(env: dict[str, str], seconds: float) -> None:
+def bench_listener_capacity(seconds: float) -> None:
     """Raise the rate of 50-transform messages until the TransformListener loses one."""
     best: tuple[int, float] | None = None
     for rate in (1000, 2000, 3000, 4000, 5000, 6000, 8000):
         count = int(rate * seconds)
-        sink_args = ['--role', 'sink', '--expect', str(count), '--timeout', str(seconds + 60)]
-        sink = start_role(__file__, env, *sink_args, '--listener')
-        assert sink.stdout is not None
-        sink.stdout.readline()
-        source = start_role(
-            __file__, env, '--role', 'source', '--count', str(count), '--rate', str(rate),
-            '--transforms', '50', '--pre-encoded',
-        )  # fmt: skip
-        sent = last_json(source, seconds + 120).get('sent', 0)
-        result = last_json(sink, seconds + 120)
+        sent, result = run_pair(
+            ['--expect', str(count), '--listener'],
+            ['--count', str(count), '--rate', str(rate), '--transforms', '50', '--pre-encoded'],
+            seconds + 60,
+        )
         received = int(result.get('received', 0))
         cpu = result.get('cpu_percent', 0.0)
         print(
             f'  listener at {rate} msg/s x 50 = {50 * rate} transforms/s: received '
-            f'{received}/{int(sent)}, CPU {cpu:.0f} % of one core'
+            f'{received}/{sent}, CPU {cpu:.0f} % of one core'
         )
         if received < sent:
             break
@@ -270,35 +265,13 @@ def bench_listener_capacity(env: dict[str, str], seconds: float) -> None:
     )
 
 
-def bench_latency(env: dict[str, str], seconds: float) -> None:
+def bench_latency(seconds: float) -> None:
     count = int(1000 * seconds)
-    sink = start_role(
-        __file__,
-        env,
-        '--role',
-        'sink',
-        '--expect',
-        str(count),
-        '--latency',
-        '--timeout',
-        str(seconds + 30),
+    _, result = run_pair(
+        ['--expect', str(count), '--latency'],
+        ['--count', str(count), '--rate', '1000', '--transforms', '1'],
+        seconds + 30,
     )
-    assert sink.stdout is not None
-    sink.stdout.readline()
-    source = start_role(
-        __file__,
-        env,
-        '--role',
-        'source',
-        '--count',
-        str(count),
-        '--rate',
-        '1000',
-        '--transforms',
-        '1',
-    )
-    last_json(source, seconds + 60)
-    result = last_json(sink, seconds + 60)
     print(
         f'one-way latency 1 kHz, 1 transform: p50 {result.get("p50_us", float("nan")):.0f} us, '
         f'p99 {result.get("p99_us", float("nan")):.0f} us (target p50 <= 200 us; '
@@ -330,25 +303,23 @@ def main() -> None:
     if args.role == 'source':
         run_source(args)
         return
+    # This process and its children: loopback, the benchmark's own domain, the DDS world.
+    os.environ.setdefault('ROS_DOMAIN_ID', '231')
+    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
+    os.environ['TF_DEMO_BACKEND'] = 'dds'
+    os.environ.pop('ROS_LOCALHOST_ONLY', None)
     env = dict(os.environ)
-    env.setdefault('ROS_DOMAIN_ID', '231')
-    env['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    env['TF_DEMO_BACKEND'] = 'dds'
-    env.pop('ROS_LOCALHOST_ONLY', None)
-    os.environ.update(
-        {k: env[k] for k in ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE', 'TF_DEMO_BACKEND')}
-    )
     print(f'tf_demo DDS transport benchmark (domain {env["ROS_DOMAIN_ID"]}, loopback)')
     if args.only in (None, 'publish'):
         bench_publish_cost(env, 20000)
     if args.only in (None, 'ingest'):
-        bench_ingest(env, args.seconds, listener=False)
+        bench_ingest(args.seconds, listener=False)
     if args.only in (None, 'listener'):
-        bench_ingest(env, args.seconds, listener=True)
+        bench_ingest(args.seconds, listener=True)
     if args.only in (None, 'latency'):
-        bench_latency(env, args.seconds)
+        bench_latency(args.seconds)
     if args.only in (None, 'capacity'):
-        bench_listener_capacity(env, min(args.seconds, 3.0))
+        bench_listener_capacity(min(args.seconds, 3.0))
 
 
 if __name__ == '__main__':
