@@ -15,9 +15,10 @@
 """
 Issue 10 point 8: a flood of bad /tf samples gives a bounded number of log lines.
 
-A real peer process sends thousands of rounds of invalid transforms (and, standalone, of
-undecodable bytes) to a real ``tf_echo``; its log shows each kind's first line verbatim, then
-throttled counts per writer, and it still echoes the valid transform sent afterwards.
+A real peer process sends thousands of rounds of invalid transforms and of undecodable bytes to a
+real ``tf_echo`` (whose listener decodes the serialised bytes itself in both worlds); its log
+shows each kind's first line verbatim, then throttled counts per writer, and it still echoes the
+valid transform sent afterwards.
 """
 
 from __future__ import annotations
@@ -49,7 +50,7 @@ pytestmark = pytest.mark.dds
 
 def test_a_flood_of_bad_samples_logs_a_bounded_number_of_lines(world_env: dict[str, str]) -> None:
     """Thousands of bad samples: each kind logged once, then counted; tf_echo keeps working."""
-    garbage = ['--garbage'] if WORLD == 'dds' else []
+    garbage = ['--garbage']
     echo = ChildProcess(executable_command('tf_echo', 'world', 'good', '5'), world_env)
     peer = ChildProcess([sys.executable, str(PEER), '--count', str(ROUNDS), *garbage], world_env)
     try:
@@ -62,8 +63,12 @@ def test_a_flood_of_bad_samples_logs_a_bounded_number_of_lines(world_env: dict[s
             counted,
         )
         if garbage:
-            line = echo.wait_for_line('more malformed samples from writer', 60, anywhere=True)
-            assert re.search(r'from writer ([0-9a-f]{2}\.){15}[0-9a-f]{2} in the last', line)
+            line = echo.wait_for_line('more malformed samples from ', 60, anywhere=True)
+            # The standalone world names the writer by its GUID; rclpy's message info has none.
+            writer = (
+                r'writer ([0-9a-f]{2}\.){15}[0-9a-f]{2}' if WORLD == 'dds' else "a writer on '/tf'"
+            )
+            assert re.search(f'from {writer} in the last', line), line
         peer.process.send_signal(signal.SIGINT)
         assert peer.finish() == 0
         echo.process.send_signal(signal.SIGINT)

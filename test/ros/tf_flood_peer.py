@@ -17,9 +17,9 @@ A test peer that floods ``/tf`` and ``/tf_static`` with bad samples, until SIGIN
 
 Once a subscriber matched, it sends ``--count`` rounds at once, each: a TFMessage of invalid
 transforms (NaN quaternion, empty frame_id, frame its own parent) on both topics and, with
-``--garbage`` (standalone world only: rclpy decodes in its rmw), undecodable CDR bytes on
-``/tf``. It prints ``flooded <rounds>``, then sends one such round and a valid ``world`` ->
-``good`` transform (x = 7) every 0.1 s.
+``--garbage``, undecodable CDR bytes on ``/tf`` (published as serialised bytes, which both
+worlds' publishers take). It prints ``flooded <rounds>``, then sends one such round and a valid
+``world`` -> ``good`` transform (x = 7) every 0.1 s.
 """
 
 from __future__ import annotations
