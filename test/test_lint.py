@@ -260,14 +260,9 @@ def test_the_world_is_not_chosen_by_rewriting_namespaces() -> None:
     assert found == []
 
 
-# Test folders whose types are still being fixed; delete a name to hold it to mypy too.
-MYPY_NOT_YET = ('test/core', 'test/ros')
-
-
 @pytest.mark.linter
 @pytest.mark.standalone  # the type check needs the standalone world's packages (cyclonedds)
 def test_mypy_is_clean_on_tests_and_benchmarks() -> None:
     """Mypy passes on test/ and bench/ (as strict as the package; test functions may be bare)."""
-    skipped = [arg for folder in MYPY_NOT_YET for arg in ('--exclude', f'^{folder}/')]
-    result = _run('mypy', '--no-incremental', *skipped, 'test', 'bench')
+    result = _run('mypy', '--no-incremental', 'test', 'bench')
     assert result.returncode == 0, result.stdout + result.stderr

@@ -23,6 +23,7 @@ import pytest
 from tf_demo.core import BufferCore
 from tf_demo.core import math3d
 from tf_demo.core import TransformException
+from tf_demo.core.buffer_core import TransformResult
 
 S = 1_000_000_000
 FRAMES = ['f0', 'f1', 'f2', 'f3', 'f4', 'f5', 'f6']
@@ -43,8 +44,10 @@ def _random_buffer(rng: random.Random) -> BufferCore:
     return core
 
 
-def _first_failure(core, target, source, times):
-    singles = []
+def _first_failure(
+    core: BufferCore, target: str, source: str, times: list[int]
+) -> tuple[TransformException | None, list[TransformResult] | None]:
+    singles: list[TransformResult] = []
     for stamp in times:
         try:
             singles.append(core.lookup_transform(target, source, stamp))
@@ -72,6 +75,7 @@ def test_batch_equals_single_lookups_on_random_trees(seed):
             assert str(info.value) == str(error)
             continue
         translations, rotations = core.lookup_transforms(target, source, np.array(times))
+        assert singles is not None  # no failure: every single lookup answered
         for row, single in enumerate(singles):
             assert translations[row] == pytest.approx(single.translation, abs=1e-9)
             assert rotations[row] == pytest.approx(single.rotation, abs=1e-9)

@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Callable
 import logging
 import math
+from typing import Any
 
 import numpy as np
 import pytest
@@ -41,10 +42,10 @@ SUFFIX_BAR_FOO = ', when looking up transform from frame [bar] to frame [foo]'
 class Log:
     """Collects tf2's log lines."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.lines: list[tuple[int, str]] = []
 
-    def __call__(self, level, text):
+    def __call__(self, level: int, text: str) -> None:
         self.lines.append((level, text))
 
 
@@ -497,8 +498,9 @@ def test_bad_argument_types_are_reported():
     core = BufferCore()
     with pytest.raises(TypeError, match='translation'):
         core.set_transform('p', 'c', S, (0, 0), IDENTITY)
+    untyped_none: Any = None  # what an untyped caller may pass
     with pytest.raises(TypeError, match='must be str'):
-        core.set_transform(None, 'c', S, (0, 0, 0), IDENTITY)
+        core.set_transform(untyped_none, 'c', S, (0, 0, 0), IDENTITY)
     with pytest.raises(ValueError, match='negative'):
         BufferCore(-1)
 

@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 from tf_demo.core import BufferCore
 from tf_demo.core import TransformException
+from tf_demo.core.math3d import Vec3
 
 S = 1_000_000_000
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
@@ -38,7 +39,7 @@ def fast_switching():
     sys.setswitchinterval(old)
 
 
-def _writer(core: BufferCore, chain: int, errors: list) -> None:
+def _writer(core: BufferCore, chain: int, errors: list[Exception]) -> None:
     try:
         for k in range(1, ROUNDS + 1):
             stamp = k * S // 100
@@ -54,7 +55,7 @@ def _writer(core: BufferCore, chain: int, errors: list) -> None:
         errors.append(error)
 
 
-def _reader(core: BufferCore, chain: int, errors: list, results: list) -> None:
+def _reader(core: BufferCore, chain: int, errors: list[Exception], results: list[Vec3]) -> None:
     for k in range(ROUNDS * 3):
         try:
             if k % 3 == 0:
@@ -81,8 +82,8 @@ def _reader(core: BufferCore, chain: int, errors: list, results: list) -> None:
 def test_concurrent_inserts_and_lookups_are_consistent():
     """Writers and readers on shared frames raise only tf2 errors and see whole inserts."""
     core = BufferCore()
-    errors: list = []
-    results: list = []
+    errors: list[Exception] = []
+    results: list[Vec3] = []
     threads = [threading.Thread(target=_writer, args=(core, chain, errors)) for chain in range(2)]
     threads += [
         threading.Thread(target=_reader, args=(core, chain % 2, errors, results))

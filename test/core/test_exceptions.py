@@ -29,7 +29,7 @@ S = 1_000_000_000
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
 
 
-def _core():
+def _core() -> BufferCore:
     core = BufferCore()
     core.set_transform('a', 'b', S, (0, 0, 0), IDENTITY)
     core.set_transform('c', 'd', S, (0, 0, 0), IDENTITY)
@@ -79,10 +79,11 @@ def test_full_lookup_labels_in_order():
         'Invalid argument "/x" passed to lookupTransform argument fixed_frame - in tf2 '
         "frame_ids cannot start with a '/'"
     )
-    with pytest.raises(LookupException) as info:
+    with pytest.raises(LookupException) as lookup_info:
         core.lookup_transform_full('q', 0, 'r', 0, 's')
     assert (
-        str(info.value) == '"q" passed to lookupTransform argument target_frame does not exist. '
+        str(lookup_info.value)
+        == '"q" passed to lookupTransform argument target_frame does not exist. '
     )
     assert core.can_transform_full('a', 0, 'b', 0, '', True) == (
         False,

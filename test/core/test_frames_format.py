@@ -22,7 +22,7 @@ S = 1_000_000_000
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
 
 
-def _rep105():
+def _rep105() -> BufferCore:
     core = BufferCore()
     core.set_transform('map', 'odom', 0, (0, 0, 0), IDENTITY, 'static_pub', True)
     core.set_transform('odom', 'base', 10 * S, (0, 0, 0), IDENTITY, 'odometry')

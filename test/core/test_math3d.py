@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 import math
 import random
 
@@ -24,18 +25,18 @@ import pytest
 from tf_demo.core import math3d as m3
 
 
-def _close(a, b, tol=1e-9):
+def _close(a: Sequence[float], b: Sequence[float], tol: float = 1e-9) -> bool:
     return all(abs(x - y) <= tol for x, y in zip(a, b, strict=True))
 
 
-def _same_rotation(a, b, tol=1e-9):
+def _same_rotation(a: Sequence[float], b: Sequence[float], tol: float = 1e-9) -> bool:
     return _close(a, b, tol) or _close(a, [-v for v in b], tol)
 
 
-def _random_quat(rng):
-    q = [rng.gauss(0, 1) for _ in range(4)]
-    n = math.sqrt(sum(v * v for v in q))
-    return tuple(v / n for v in q)
+def _random_quat(rng: random.Random) -> m3.Quat:
+    x, y, z, w = (rng.gauss(0, 1) for _ in range(4))
+    n = math.sqrt(x * x + y * y + z * z + w * w)
+    return (x / n, y / n, z / n, w / n)
 
 
 def test_set_rpy_matches_tf2_value():

@@ -25,6 +25,7 @@ from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import ERROR_BACKWARD_EXTRAPOLATION
 from tf_demo.core.time_cache import ERROR_FORWARD_EXTRAPOLATION
 from tf_demo.core.time_cache import ERROR_NO_DATA_FOR_EXTRAPOLATION
+from tf_demo.core.time_cache import Sample
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
@@ -32,11 +33,25 @@ S = 1_000_000_000
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
 
 
-def _values(x=0.0, y=0.0, z=0.0, q=IDENTITY, parent=1):
-    return (float(x), float(y), float(z), *q, parent)
+def _values(
+    x: float = 0.0,
+    y: float = 0.0,
+    z: float = 0.0,
+    q: tuple[float, float, float, float] = IDENTITY,
+    parent: int = 1,
+) -> Sample:
+    qx, qy, qz, qw = q
+    return (float(x), float(y), float(z), qx, qy, qz, qw, parent)
 
 
-def _stamps(cache):
+def _data(cache: TimeCache | StaticCache, time_ns: int) -> Sample:
+    """The cache's sample at ``time_ns`` (the tests that call this expect one)."""
+    sample = cache.get_data(time_ns)
+    assert sample is not None
+    return sample
+
+
+def _stamps(cache: TimeCache | StaticCache) -> list[int]:
     return [item.stamp_ns for item in cache.items()]
 
 
@@ -47,7 +62,7 @@ def test_repeatability_in_and_reverse_order():
         for i in order:
             cache.insert(i, _values(i, parent=i))
         for i in range(1, 101):
-            sample = cache.get_data(i)
+            sample = _data(cache, i)
             assert sample is not None
             assert sample[0] == i
             assert sample[7] == i
@@ -59,7 +74,7 @@ def test_time_zero_returns_newest():
     cache = TimeCache(10 * S)
     for i in (5, 9, 2):
         cache.insert(i, _values(i, parent=1))
-    assert cache.get_data(0)[0] == 9
+    assert _data(cache, 0)[0] == 9
 
 
 def test_get_all_items_order_and_pruning():
@@ -118,12 +133,12 @@ def test_tie_breaking_latest_oldest_interior():
     cache.insert(2 * S, _values(4, parent=1))
     cache.insert(3 * S, _values(5, parent=1))
     cache.insert(3 * S, _values(6, parent=1))
-    assert cache.get_data(3 * S)[0] == 6
-    assert cache.get_data(S)[0] == 1
+    assert _data(cache, 3 * S)[0] == 6
+    assert _data(cache, S)[0] == 1
     # Interior: older neighbour is the newest-inserted at 2 s, so ratio 0 gives 4.
-    assert cache.get_data(2 * S)[0] == 4
+    assert _data(cache, 2 * S)[0] == 4
     # Between 2 s and 3 s: from the newest-inserted at 2 s (4) to the first-inserted at 3 s (5).
-    assert cache.get_data(2 * S + S // 2)[0] == pytest.approx(4.5)
+    assert _data(cache, 2 * S + S // 2)[0] == pytest.approx(4.5)
 
 
 def test_cartesian_interpolation():
@@ -133,11 +148,11 @@ def test_cartesian_interpolation():
         cache = TimeCache(10 * S)
         a = [rng.uniform(-10, 10) for _ in range(3)]
         b = [rng.uniform(-10, 10) for _ in range(3)]
-        cache.insert(S, _values(*a, parent=1))
-        cache.insert(2 * S, _values(*b, parent=1))
+        cache.insert(S, _values(a[0], a[1], a[2], parent=1))
+        cache.insert(2 * S, _values(b[0], b[1], b[2], parent=1))
         for step in range(11):
             t = S + step * S // 10
-            sample = cache.get_data(t)
+            sample = _data(cache, t)
             ratio = step / 10
             for axis in range(3):
                 expected = (1 - ratio) * a[axis] + ratio * b[axis]
@@ -151,7 +166,7 @@ def test_angular_interpolation_is_slerp():
     q1 = math3d.quat_from_rpy(-0.5, 0.4, 2.0)
     cache.insert(0 + 10, _values(q=q0, parent=1))
     cache.insert(10 + S, _values(q=q1, parent=1))
-    sample = cache.get_data(10 + S // 4)
+    sample = _data(cache, 10 + S // 4)
     assert sample[3:7] == pytest.approx(math3d.slerp(q0, q1, 0.25), abs=1e-12)
 
 
@@ -160,7 +175,7 @@ def test_no_interpolation_across_parent_change():
     cache = TimeCache(10 * S)
     cache.insert(S, _values(1, parent=1))
     cache.insert(2 * S, _values(2, parent=2))
-    sample = cache.get_data(S + S // 2)
+    sample = _data(cache, S + S // 2)
     assert sample[0] == 1.0
     assert sample[7] == 1
     assert cache.get_parent(S + S // 2) == 1
@@ -217,7 +232,7 @@ def test_lazy_pruning_compacts_and_stays_correct():
         cache.insert(i * S // 100, _values(i, parent=1))
     assert len(cache) == 102
     for i in range(4900, 5000):
-        assert cache.get_data(i * S // 100)[0] == i
+        assert _data(cache, i * S // 100)[0] == i
 
 
 def test_static_cache_answers_any_time():
@@ -225,12 +240,12 @@ def test_static_cache_answers_any_time():
     cache = StaticCache()
     cache.insert(123, _values(1, parent=7))
     cache.insert(5, _values(2, parent=8))
-    assert cache.get_data(999 * S)[0] == 2
+    assert _data(cache, 999 * S)[0] == 2
     assert cache.get_parent(1) == 8
     assert cache.latest_time_and_parent() == (0, 8)
     assert len(cache) == 1
     cache.clear()
-    assert cache.get_data(0)[0] == 2
+    assert _data(cache, 0)[0] == 2
 
 
 def test_display_time_point():
@@ -256,7 +271,7 @@ def test_interior_search_matches_linear_scan_on_irregular_stamps():
                 continue
             older = max(order for stamp, order in ascending if stamp <= time_ns)
             assert cache.get_parent(time_ns) == 1 + older % 3
-            sample = cache.get_data(time_ns)
+            sample = _data(cache, time_ns)
             newer = min((stamp, order) for stamp, order in ascending if stamp > time_ns)[1]
             if 1 + older % 3 != 1 + newer % 3:
                 assert sample[0] == older

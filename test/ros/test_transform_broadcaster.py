@@ -19,9 +19,12 @@ from __future__ import annotations
 import pytest
 from tf_demo.nodes.helpers import make_transform_stamped
 from tf_demo.ros.transform_broadcaster import as_transform_list
+from tf_demo.transport.messages import geometry_msgs
+
+TransformStamped = geometry_msgs.TransformStamped
 
 
-def tf(child: str, x: float) -> object:
+def tf(child: str, x: float) -> TransformStamped:
     return make_transform_stamped('base', child, 0, (x, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
 
 
