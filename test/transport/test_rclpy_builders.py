@@ -36,18 +36,11 @@ CASES: list[Case] = [
 
 
 def _reference(parent: str, child: str, stamp_ns: int, t: tuple[float, ...], q: tuple[float, ...]):
-    """The same message made the ordinary way: rclpy's constructors and setters."""
+    """The same message made the ordinary way: rclpy's constructors and property setters."""
     from geometry_msgs.msg import TransformStamped
+    from tf_demo.msgs.convert import fill_transform_stamped
 
-    msg = TransformStamped()
-    msg.header.stamp.sec, msg.header.stamp.nanosec = divmod(stamp_ns, 10**9)
-    msg.header.frame_id = parent
-    msg.child_frame_id = child
-    v = msg.transform.translation
-    v.x, v.y, v.z = (float(value) for value in t)
-    r = msg.transform.rotation
-    r.x, r.y, r.z, r.w = (float(value) for value in q)
-    return msg
+    return fill_transform_stamped(TransformStamped(), parent, child, stamp_ns, t, q)
 
 
 def _slots(message: Any) -> object:  # an rclpy message (no stubs) or a leaf value
