@@ -83,14 +83,6 @@ class DdsNode(NodeParametersMixin, NodeServicesMixin, NodeEndpointsMixin):
     :param parameter_overrides: ``Parameter`` objects that replace declared defaults.
     """
 
-    supports_raw_subscriptions = True
-    """
-    Capability: ``create_subscription(..., raw=True)`` hands callbacks the CDR bytes.
-
-    Readers of serialized samples (the tf listener's fast path) check this class attribute
-    (default False where absent, as on rclpy's ``Node``) instead of the class' module.
-    """
-
     def __init__(
         self,
         node_name: str,
