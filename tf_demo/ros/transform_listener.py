@@ -118,9 +118,6 @@ class TransformListener:
         self._private_node: Node | None = None
         self.dedicated_listener_thread: threading.Thread | None = None
         self._malformed = PerWriterThrottle('malformed samples')
-        self._set_log_source: Callable[[Writer | None], None] | None = getattr(
-            buffer, 'set_log_source', None
-        )
         self._tf_topic = tf_topic
         self._tf_static_topic = tf_static_topic
         host = node
@@ -212,7 +209,9 @@ class TransformListener:
         if note is not None:
             note()
         insert = self.buffer.set_transform_static if is_static else self.buffer.set_transform
-        set_source = self._set_log_source
+        set_source: Callable[[Writer | None], None] | None = getattr(
+            self.buffer, 'set_log_source', None
+        )  # this buffer's: tf2_ros lets a user replace the listener's buffer at any time
         if set_source is not None:
             set_source(writer)
         try:
