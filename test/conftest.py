@@ -186,6 +186,17 @@ def dds_env(world_env: dict[str, str]) -> dict[str, str]:
 
 
 @pytest.fixture
+def dds_world(dds_env: dict[str, str]) -> Iterator[None]:
+    """An initialised standalone world on the test's private domain, shut down afterwards."""
+    del dds_env
+    from tf_demo.transport import dds_backend
+
+    dds_backend.init()
+    yield
+    dds_backend.shutdown()
+
+
+@pytest.fixture
 def jazzy_env(world_env: dict[str, str]) -> dict[str, str]:
     """:func:`world_env` of a ROS-world test with tf_demo installed in the sourced workspace."""
     from ros_world.jazzy import require_installed_tf_demo
@@ -435,3 +446,13 @@ def nodes(ros: None) -> Iterator[Spinning]:
         yield spinning
     finally:
         spinning.close()
+
+
+@pytest.fixture
+def executors(ros: None) -> Iterator[list[Any]]:
+    """Executors made by the test; shut down at its end (before the world is)."""
+    del ros
+    made: list[Any] = []
+    yield made
+    for executor in made:
+        executor.shutdown()
