@@ -13,20 +13,18 @@
 # limitations under the License.
 
 """
-Executors and callback groups behave as rclpy Jazzy's, in both worlds.
+The multi-threaded executor behaves as rclpy Jazzy's, in both worlds.
 
 Written against the node API only (``tf_demo.transport``), so the same assertions run on the
-standalone backend and on real rclpy: what was ready in one wait is served before the next
-(an always-overdue timer does not starve a subscription), ``MultiThreadedExecutor`` runs
-callbacks in a pool and honours reentrant and mutually exclusive groups, an exception raised in
-a pool thread comes out of ``spin_once``, and the TF2 guide's blocking lookup in a reentrant
-timer works. Waits are on events and barriers with generous timeouts, never on durations.
+standalone backend and on real rclpy: ``MultiThreadedExecutor`` runs callbacks in a pool and
+honours reentrant and mutually exclusive groups, an exception raised in a pool thread comes out
+of ``spin_once``, and the TF2 guide's blocking lookup in a reentrant timer works. Waits are on
+events and barriers with generous timeouts, never on durations.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from collections.abc import Iterator
 import threading
 import time
 from typing import Any
@@ -43,7 +41,6 @@ from tf_demo.transport.callback_groups import ReentrantCallbackGroup
 from tf_demo.transport.clock import Duration
 from tf_demo.transport.clock import Time
 from tf_demo.transport.executors import MultiThreadedExecutor
-from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import std_msgs
 
 pytestmark = pytest.mark.dds
@@ -62,96 +59,12 @@ def spin_until(executor: Any, done: Callable[[], bool], timeout_s: float = DEADL
     return done()
 
 
-@pytest.fixture
-def executors(ros: None) -> Iterator[list[Any]]:
-    """Executors made by the test; shut down at its end (before the world is)."""
-    made: list[Any] = []
-    yield made
-    for executor in made:
-        executor.shutdown()
-
-
-def single_threaded(executors: list[Any], *nodes: Any) -> Any:
-    executor = SingleThreadedExecutor()
-    executors.append(executor)
-    for node in nodes:
-        executor.add_node(node)
-    return executor
-
-
 def multi_threaded(executors: list[Any], *nodes: Any, num_threads: int = 2) -> Any:
     executor = MultiThreadedExecutor(num_threads=num_threads)
     executors.append(executor)
     for node in nodes:
         executor.add_node(node)
     return executor
-
-
-def test_entities_join_their_callback_group_with_rclpy_methods(ros: None) -> None:
-    """create_* put entities in the given group or the node's mutually exclusive default."""
-    node = transport.create_node('grouped')
-    reentrant = ReentrantCallbackGroup()
-    subscription = node.create_subscription(
-        std_msgs.String, 'grouped_topic', lambda _msg: None, 10, callback_group=reentrant
-    )
-    timer = node.create_timer(60.0, lambda: None)
-    other_timer = node.create_timer(60.0, lambda: None)
-    default = node.default_callback_group
-    assert isinstance(default, MutuallyExclusiveCallbackGroup)
-    assert subscription.callback_group is reentrant
-    assert reentrant.has_entity(subscription)
-    assert not default.has_entity(subscription)
-    assert timer.callback_group is default
-    assert default.has_entity(timer)
-    assert default.has_entity(other_timer)
-
-    assert default.can_execute(timer)
-    assert default.beginning_execution(timer)
-    assert not default.can_execute(other_timer)
-    assert not default.beginning_execution(other_timer)
-    default.ending_execution(timer)
-    assert default.can_execute(other_timer)
-
-    assert reentrant.beginning_execution(subscription)
-    assert reentrant.beginning_execution(subscription)
-    assert reentrant.can_execute(subscription)
-    reentrant.ending_execution(subscription)
-    reentrant.ending_execution(subscription)
-
-    mine = MutuallyExclusiveCallbackGroup()
-    late_timer = node.create_timer(60.0, lambda: None, callback_group=mine)
-    assert mine.has_entity(late_timer)
-    assert not default.has_entity(late_timer)
-
-
-def test_single_threaded_timer_blocking_past_its_period_does_not_starve_a_subscription(
-    executors: list[Any],
-) -> None:
-    """A timer overdue whenever it returns still leaves room for the subscription's messages."""
-    node = transport.create_node('slow_timer_node')
-    timer_runs: list[float] = []
-
-    def on_timer() -> None:
-        timer_runs.append(time.monotonic())
-        time.sleep(0.3)  # three periods: the timer is overdue again when it returns
-
-    node.create_timer(0.1, on_timer)
-    received: list[Any] = []
-    node.create_subscription(std_msgs.String, 'starved', received.append, 10)
-    talker = transport.create_node('starved_talker')
-    publisher = talker.create_publisher(std_msgs.String, 'starved', 10)
-    executor = single_threaded(executors, node)
-    sent = 0
-    deadline = time.monotonic() + DEADLINE_S
-    while len(received) < 3 and time.monotonic() < deadline:
-        # Publish only once the timer is overrunning, so every wait finds it overdue.
-        if timer_runs and publisher.get_subscription_count() > 0:
-            publisher.publish(std_msgs.String(data=str(sent)))
-            sent += 1
-        executor.spin_once(timeout_sec=0.1)
-    assert len(received) >= 3, f'{sent} sent, {len(timer_runs)} timer runs, too few received'
-    assert len(timer_runs) >= 2, 'the timer must keep running as well'
-    assert all(isinstance(msg, std_msgs.String) for msg in received)
 
 
 def test_multi_threaded_reentrant_group_runs_two_callbacks_at_once(
