@@ -12,13 +12,11 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""QoS profiles follow rclpy's construction rules, presets and tf2's profiles."""
+"""QoS profiles follow rclpy's construction rules and presets, in both worlds."""
 
 import pytest
 from tf_demo.transport.clock import Duration
 from tf_demo.transport.qos import DurabilityPolicy
-from tf_demo.transport.qos import DynamicBroadcasterQoS
-from tf_demo.transport.qos import DynamicListenerQoS
 from tf_demo.transport.qos import HistoryPolicy
 from tf_demo.transport.qos import InvalidQoSProfileException
 from tf_demo.transport.qos import LivelinessPolicy
@@ -27,8 +25,6 @@ from tf_demo.transport.qos import qos_profile_system_default
 from tf_demo.transport.qos import QoSPresetProfiles
 from tf_demo.transport.qos import QoSProfile
 from tf_demo.transport.qos import ReliabilityPolicy
-from tf_demo.transport.qos import StaticBroadcasterQoS
-from tf_demo.transport.qos import StaticListenerQoS
 
 
 def test_policy_values_match_rmw() -> None:
@@ -121,18 +117,3 @@ def test_presets_have_rmw_values() -> None:
     assert qos_profile_system_default.reliability is ReliabilityPolicy.SYSTEM_DEFAULT
     assert QoSPresetProfiles.get_from_short_key('sensor_data') is qos_profile_sensor_data
     assert QoSPresetProfiles.PARAMETERS.value.depth == 1000
-
-
-def test_tf2_profiles_match_tf2_ros_qos_hpp() -> None:
-    """/tf is KEEP_LAST 100 RELIABLE VOLATILE; /tf_static TRANSIENT_LOCAL depth 1 / 100."""
-    for profile in (DynamicBroadcasterQoS(), DynamicListenerQoS()):
-        assert (profile.history, profile.depth) == (HistoryPolicy.KEEP_LAST, 100)
-        assert profile.reliability is ReliabilityPolicy.RELIABLE
-        assert profile.durability is DurabilityPolicy.VOLATILE
-    assert StaticBroadcasterQoS().depth == 1
-    assert StaticListenerQoS().depth == 100
-    for profile in (StaticBroadcasterQoS(), StaticListenerQoS()):
-        assert profile.reliability is ReliabilityPolicy.RELIABLE
-        assert profile.durability is DurabilityPolicy.TRANSIENT_LOCAL
-    assert DynamicListenerQoS(10).depth == 10
-    assert DynamicBroadcasterQoS() is not DynamicBroadcasterQoS()
