@@ -12,11 +12,10 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Log lines in rcutils' console format, levels, and rclpy's once/skip_first/throttle options.
+"""Loggers: levels, rclpy's once/skip_first/throttle options, and a process' log lines.
 
 The tests run in both worlds on the world's loggers (``tf_demo.transport.logging`` names are
 rclpy's inside ROS 2) and check what rclpy and rcutils do; the processes run in the test's world.
-Only :func:`format_log_line`, the standalone world's formatter, is tested on its own.
 """
 
 from pathlib import Path
@@ -28,50 +27,10 @@ from conftest import run_captured
 import pytest
 from tf_demo.transport.clock import Clock
 from tf_demo.transport.clock import ClockType
-from tf_demo.transport.logging import format_log_line
 from tf_demo.transport.logging import get_logger
-from tf_demo.transport.logging import get_logging_severity_from_string
 from tf_demo.transport.logging import LoggingSeverity
 
-REPO_ROOT = Path(__file__).resolve().parents[2]
 LINE = re.compile(r'^\[(DEBUG|INFO|WARN|ERROR|FATAL)\] \[(\d+)\.(\d{9})\] \[([^\]]+)\]: (.*)$')
-
-
-@pytest.mark.standalone
-def test_default_format_pads_seconds_and_nanoseconds_as_rcutils() -> None:
-    """The rcutils default line is [LEVEL] [ssssssssss.nnnnnnnnn] [name]: message."""
-    line = format_log_line(LoggingSeverity.WARN, 'ns.talker', 'hello', 1_700_000_000_000_000_042)
-    assert line == '[WARN] [1700000000.000000042] [ns.talker]: hello'
-    # rcutils prints "%.10" PRId64 ".%.9" PRId64: at least ten digits of seconds
-    line = format_log_line(LoggingSeverity.INFO, 'n', 'm', 5_000_000_123)
-    assert line == '[INFO] [0000000005.000000123] [n]: m'
-
-
-@pytest.mark.standalone
-def test_custom_output_format_tokens() -> None:
-    """Tokens are substituted as rcutils does; of an unknown one only the '{' is copied."""
-    line = format_log_line(
-        LoggingSeverity.ERROR,
-        'n',
-        'm',
-        5_000_000_123,
-        output_format='{severity}|{time_as_nanoseconds}|{name}|{message}|{line_number}|{nope}'
-        '|{x{name}}',
-        line_number=12,
-    )
-    assert line == 'ERROR|0000000005000000123|n|m|12|{nope}|{xn}'
-
-
-def test_severity_names_parse_as_rcutils_parses_them() -> None:
-    """Level names are ASCII case-insensitive; nothing else ('warning', spaces) is a level."""
-    assert get_logging_severity_from_string('Debug') is LoggingSeverity.DEBUG
-    assert get_logging_severity_from_string('WARN') is LoggingSeverity.WARN
-    assert get_logging_severity_from_string('unset') is LoggingSeverity.UNSET
-    for unknown in ('WARNING', 'verbose', ' info', ''):
-        with pytest.raises(RuntimeError, match=r'^Failed to get severity name$'):
-            get_logging_severity_from_string(unknown)
-    with pytest.raises(TypeError, match='incompatible function arguments'):
-        get_logging_severity_from_string(3)  # type: ignore[arg-type]
 
 
 def test_child_loggers_inherit_their_parents_level() -> None:
