@@ -33,6 +33,7 @@ import threading
 import time
 from typing import Any
 from typing import IO
+from typing import TYPE_CHECKING
 from typing import TypeVar
 
 from hypothesis import settings
@@ -40,6 +41,9 @@ import pytest
 from tf_demo.testing import strategies  # noqa: F401  (registers the 'ci' and 'nightly' profiles)
 from tf_demo.transport.backend import backend_name
 from tf_demo.transport.backend import BackendError
+
+if TYPE_CHECKING:
+    from tf_demo.transport.dds.participant import DdsParticipant
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
 
@@ -194,6 +198,16 @@ def dds_world(dds_env: dict[str, str]) -> Iterator[None]:
     dds_backend.init()
     yield
     dds_backend.shutdown()
+
+
+@pytest.fixture
+def dds_participant(dds_env: dict[str, str]) -> Iterator[DdsParticipant]:
+    """This process' own DDS participant on the test's private domain, closed afterwards."""
+    del dds_env
+    from tf_demo.transport.dds import participant
+
+    yield participant.get_participant()
+    participant.close_participant()
 
 
 @pytest.fixture
