@@ -168,26 +168,18 @@ def test_incompatible_qos_warns_on_both_sides_and_delivers_nothing(dds_env, peer
     assert compatible.stdout[-1] == 'done 100'
 
 
-@pytest.fixture
-def wire(dds_env: dict[str, str]) -> Iterator[dds_wire.DdsParticipant]:
-    """This test process' own DDS participant on the test's domain."""
-    participant = dds_wire.get_participant()
-    yield participant
-    dds_wire.close_participant()
-
-
-def test_ros_discovery_info_names_the_node_and_its_endpoints(dds_env, peers, wire):
+def test_ros_discovery_info_names_the_node_and_its_endpoints(dds_env, peers, dds_participant):
     """ros_discovery_info, decoded with our codec, lists the node with its writer's GID."""
     start(
         peers, dds_env, 'pub', '--name', 'graph_probe', '--topic', '/probe', '--hold', '30',
     ).wait_for_line('sent 1')  # fmt: skip
-    reader = wire.create_reader(
+    reader = dds_participant.create_reader(
         dds_wire.DISCOVERY_INFO_TOPIC,
         dds_wire.DISCOVERY_INFO_TYPE,
         dds_wire.EndpointQos(reliable=True, transient_local=True, keep_all=True),
         f'typehash={rmw_dds_common.ParticipantEntitiesInfo.__typehash__};'.encode(),
     )
-    waitset = dds_wire.WaitSet(wire)
+    waitset = dds_wire.WaitSet(dds_participant)
     waitset.attach(reader.read_condition)
     deadline = time.monotonic() + 20
     infos: list[rmw_dds_common.ParticipantEntitiesInfo] = []
@@ -213,7 +205,7 @@ def test_ros_discovery_info_names_the_node_and_its_endpoints(dds_env, peers, wir
     writer_gid = bytes(node.writer_gid_seq[0].data)
     participant_gid = bytes(info.gid.data)
     assert writer_gid[:12] == participant_gid[:12]
-    assert wire.count_endpoints('rt/probe', publications=True) == 1
+    assert dds_participant.count_endpoints('rt/probe', publications=True) == 1
 
 
 def test_deprecated_ros_localhost_only_still_connects_and_warns(dds_env, peers):
