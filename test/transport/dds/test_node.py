@@ -12,7 +12,7 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""DdsNode: its name, namespace and parameters from --ros-args, and a destroyed node."""
+"""DdsNode: its name, namespace, topic remaps and parameters from --ros-args."""
 
 from __future__ import annotations
 
@@ -43,13 +43,3 @@ def test_ros_args_rename_remap_and_override(dds_world):
     assert node.declare_parameter('rate', 1.0).value == 5.0
     assert node.count_publishers('/robot/talk') == 1
     assert node.count_subscribers('/robot/talk') == 0
-
-
-@pytest.mark.dds
-def test_destroyed_node_refuses_new_entities(dds_world):
-    """After destroy_node, creating a publisher says the node was destroyed."""
-    node = dds_backend.DdsNode('gone', namespace='ns')
-    assert node.get_fully_qualified_name() == '/ns/gone'
-    node.destroy_node()
-    with pytest.raises(RuntimeError, match="node '/ns/gone' was destroyed"):
-        node.create_publisher(std_msgs.String, 'x', 1)
