@@ -23,6 +23,7 @@ from collections.abc import Sequence
 import contextlib
 import fcntl
 import importlib.util
+import json
 import os
 from pathlib import Path
 import signal
@@ -33,6 +34,7 @@ import threading
 import time
 from typing import Any
 from typing import IO
+from typing import Protocol
 from typing import TYPE_CHECKING
 from typing import TypeVar
 
@@ -46,6 +48,7 @@ if TYPE_CHECKING:
     from tf_demo.transport.dds.participant import DdsParticipant
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
+TF_FAULT_PEER = REPO_ROOT / 'test' / 'cli' / 'tf_fault_peer.py'
 
 # Every hypothesis test runs deterministically in CI (derandomized 'ci' profile) unless
 # TF_DEMO_HYPOTHESIS_PROFILE=nightly asks for the larger random run.
@@ -310,6 +313,46 @@ def spawn(world_env: dict[str, str], tmp_path: Path) -> Iterator[Processes]:
         yield processes
     finally:
         processes.stop_all()
+
+
+TfPeerEntry = dict[str, object]
+"""One transform of a ``test/cli/tf_fault_peer.py`` scenario (see its docstring)."""
+
+
+class StartTfPeer(Protocol):
+    """The ``tf_peers`` fixture: start a tf_fault_peer publishing ``entries``."""
+
+    def __call__(self, *entries: TfPeerEntry) -> subprocess.Popen[str]: ...
+
+
+@pytest.fixture
+def tf_peers(world_env: dict[str, str]) -> Iterator[StartTfPeer]:
+    """Start tf_fault_peer processes publishing a JSON scenario; stop them at the end."""
+    started: list[subprocess.Popen[str]] = []
+
+    def start(*entries: TfPeerEntry) -> subprocess.Popen[str]:
+        process = subprocess.Popen(
+            [sys.executable, str(TF_FAULT_PEER), json.dumps(list(entries))],
+            env=world_env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        started.append(process)
+        assert process.stdout is not None
+        assert process.stderr is not None
+        assert process.stdout.readline().strip() == 'ready', process.stderr.read()
+        return process
+
+    yield start
+    for process in started:
+        process.send_signal(signal.SIGINT)
+    for process in started:
+        try:
+            process.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
 
 
 # -- appended by reviewer: one output collector for the child processes of the DDS tests ------
