@@ -99,7 +99,7 @@ def test_the_live_part_runs_in_an_initialised_world(
         if options.count == 2:
             msg = 'nothing to show'
             raise ToolError(msg)
-        return options.count
+        return int(options.count)
 
     def run(*args: str) -> int:
         return tool_main('probe', list(args), parser(), options_error=lambda _o: None, live=live)
