@@ -266,3 +266,63 @@ def test_mypy_is_clean_on_tests_and_benchmarks() -> None:
     """Mypy passes on test/ and bench/ (as strict as the package; test functions may be bare)."""
     result = _run('mypy', '--no-incremental', 'test', 'bench')
     assert result.returncode == 0, result.stdout + result.stderr
+
+
+_GENERATED_MESSAGES = (
+    'builtin_interfaces', 'geometry_msgs', 'nav_msgs', 'rcl_interfaces', 'rmw_dds_common',
+    'rosgraph_msgs', 'sensor_msgs', 'service_msgs', 'std_msgs', 'tf2_msgs',
+)  # fmt: skip
+_WORLD_FACADES = ('callback_groups', 'clock', 'executors', 'logging', 'node', 'parameters')
+#: The modules that have no test file named after them, and where they are tested instead.
+TESTED_ELSEWHERE = {
+    **{
+        f'tf_demo/msgs/{name}.py': 'generated from the schema table: test/msgs/test_typegen.py '
+        "checks it is the generator's output, test/msgs/test_message.py its classes"
+        for name in _GENERATED_MESSAGES
+    },
+    **{
+        f'tf_demo/transport/{name}.py': 'a world facade (star imports only): the rclpy '
+        "backend's test_each_facade_* check which world's names it holds; the behaviour is "
+        f'tested in both worlds by test/transport/dds/test_{name}*.py'
+        for name in _WORLD_FACADES
+    },
+    'tf_demo/transport/dds_backend.py': "re-exports transport/dds/'s public names as the "
+    'standalone backend: test/transport/test_backend.py checks the world takes it, and the '
+    'tests under test/transport/dds/ reach the runtime through it',
+}
+
+
+def _test_stems(module: Path) -> list[str]:
+    """The stems of the test files named after ``module``, in the folder mirroring its own."""
+    relative = module.relative_to(REPO_ROOT / 'tf_demo')
+    folder = REPO_ROOT / 'test' / relative.parent
+    name = module.stem.lstrip('_')
+    if (folder / name).is_dir():  # a folder of tests named after the module
+        return [path.stem for path in (folder / name).glob('test_*.py')]
+    return [
+        path.stem
+        for path in folder.glob(f'test_{name}*.py')
+        if path.stem == f'test_{name}' or path.stem.startswith(f'test_{name}_')
+    ]
+
+
+@pytest.mark.linter
+def test_every_module_has_a_test_named_after_it() -> None:
+    """Tests mirror the package: tf_demo/a/b/m.py has test/a/b/test_m.py (or test_m_*.py, m/).
+
+    ``__init__`` modules aside; the few modules tested elsewhere say where (TESTED_ELSEWHERE).
+    """
+    missing = []
+    for path in sorted((REPO_ROOT / 'tf_demo').rglob('*.py')):
+        relative = path.relative_to(REPO_ROOT).as_posix()
+        if path.stem == '__init__' or relative in TESTED_ELSEWHERE:
+            continue
+        if not _test_stems(path):
+            missing.append(relative)
+    assert missing == []
+    stale = [relative for relative in TESTED_ELSEWHERE if not (REPO_ROOT / relative).is_file()]
+    assert stale == [], 'TESTED_ELSEWHERE names modules that are gone'
+    tested_anyway = [
+        relative for relative in TESTED_ELSEWHERE if _test_stems(REPO_ROOT / relative)
+    ]
+    assert tested_anyway == [], 'these now have a test named after them: drop their exemption'
