@@ -278,7 +278,7 @@ TESTED_ELSEWHERE = {
     **{
         f'tf_demo/msgs/{name}.py': 'generated from the schema table: test/msgs/test_typegen.py '
         "checks it is the generator's output, test/msgs/test_message.py its classes"
-        for name in _GENERATED_MESSAGES
+        for name in (*_GENERATED_MESSAGES, '_types')
     },
     **{
         f'tf_demo/transport/{name}.py': 'a world facade (star imports only): the rclpy '

@@ -20,7 +20,7 @@ One module per ROS package (``builtin_interfaces``, ``std_msgs``, ``geometry_msg
 ``rcl_interfaces``) with rclpy-compatible classes (services: ``Service`` types with ``Request``
 and ``Response``); :mod:`~tf_demo.msgs.cdr` (de)serialises them byte-identically to ROS 2;
 :mod:`~tf_demo.msgs.convert` turns them into the core's plain values; :mod:`~tf_demo.msgs.typehash`
-gives their RIHS01 hashes. Everything comes from the table in ``_schema.py``: the package modules
-are typed source files generated from it (``python -m tf_demo.msgs._typegen --write``), the
-codecs are generated from it at run time.
+gives their RIHS01 hashes. Everything comes from the table in ``_schema.py``: the typed classes
+are generated from it into one type store, ``_types.py``, which the package modules re-export
+(``python -m tf_demo.msgs._typegen --write``); the codecs are generated from it at run time.
 """

@@ -15,10 +15,12 @@
 """
 The base classes of the message and service classes, and the registry of both.
 
-The package modules (``geometry_msgs.py`` etc.) are generated from the schema table
-(:data:`tf_demo.msgs._schema.DEFINITIONS`) by :mod:`tf_demo.msgs._typegen`. Each message class
-there declares its ``__msgtype__``, its ``__slots__`` and typed fields, its constants, a
-keyword-only constructor with rclpy's defaults (written as ``__new__``) and ``__eq__``.
+The message classes are generated from the schema table
+(:data:`tf_demo.msgs._schema.DEFINITIONS`) into the type store ``_types.py`` by
+:mod:`tf_demo.msgs._typegen`, and re-exported by their package modules (``geometry_msgs.py``
+etc.), which are their ``__module__``. Each message class declares its ``__msgtype__``, its
+``__slots__`` and typed fields, its constants, a keyword-only constructor with rclpy's defaults
+(written as ``__new__``) and ``__eq__``.
 
 :class:`MessageMeta` adds what follows from the table (``__dds_typename__``, ``__typehash__``,
 rclpy's field type strings) and installs the constructor as the class's own call, in a metaclass
@@ -118,6 +120,8 @@ class MessageMeta(type):
                 'fields of the schema table: run python -m tf_demo.msgs._typegen --write'
             )
             raise SchemaError(msg)
+        # The class lives in the type store; its home for users is its package's module.
+        namespace['__module__'] = f'tf_demo.msgs.{spec.package}'
         namespace['__dds_typename__'] = spec.dds_typename
         namespace['__typehash__'] = type_hash(spec.msgtype)
         namespace['_spec'] = spec
@@ -192,7 +196,7 @@ class Service:
     """
     Base of the standalone world's ROS service types (rclpy's ``srv`` class surface).
 
-    A generated package module declares ``class GetParameters(Service)`` with its
+    The type store declares ``class GetParameters(Service)`` with its
     ``__srvtype__`` and the message classes ``Request``, ``Response`` and ``Event`` (module
     attributes ``GetParameters_Request`` etc.); the subclass gets ``__typehash__``, the
     service's RIHS01 hash as rosidl computes it.
@@ -207,4 +211,5 @@ class Service:
     def __init_subclass__(cls, **kwargs: object) -> None:
         super().__init_subclass__(**kwargs)
         cls.__typehash__ = type_hash(cls.__srvtype__)
+        cls.__module__ = f'tf_demo.msgs.{cls.__srvtype__.split("/", 1)[0]}'
         SERVICE_REGISTRY[cls.__srvtype__] = cls

@@ -13,16 +13,19 @@
 # limitations under the License.
 
 """
-Write the typed package modules of :mod:`tf_demo.msgs` from the schema table.
+Write the typed message classes of :mod:`tf_demo.msgs` from the schema table.
 
-Each ROS package of :data:`~tf_demo.msgs._schema.DEFINITIONS` and
-:data:`~tf_demo.msgs._schema.SERVICE_DEFINITIONS` becomes one module (``geometry_msgs.py``...)
-whose classes spell out their fields with types, a keyword constructor with rclpy's defaults and
-``__eq__`` (see :mod:`tf_demo.msgs._message`), so that a reader and mypy see every field. The
-modules are marked generated; the output is what ``ruff format`` would write.
+Every message and service type of :data:`~tf_demo.msgs._schema.DEFINITIONS` and
+:data:`~tf_demo.msgs._schema.SERVICE_DEFINITIONS` becomes one class in one type store,
+``_types.py`` (as rosbags keeps a distribution's types in one generated module): its fields spelled
+out with types, a keyword constructor with rclpy's defaults and ``__eq__`` (see
+:mod:`tf_demo.msgs._message`), so that a reader and mypy see every field. Each ROS package gets a
+module of its own (``geometry_msgs.py``...) that re-exports its classes from the store, where
+rclpy users look for them. The files are marked generated; the output is what ``ruff format``
+would write.
 
 Run ``python -m tf_demo.msgs._typegen --write`` after changing the table; without ``--write`` it
-lists the modules that are out of date and exits 1 if there are any (a test does the same).
+lists the files that are out of date and exits 1 if there are any (a test does the same).
 """
 
 from __future__ import annotations
@@ -71,11 +74,14 @@ def _licence_header() -> str:
     return ''.join(header)
 
 
-class _Module:
-    """The imports one generated module needs, gathered while its classes are written."""
+#: The generated type store, beside the package modules.
+STORE = '_types.py'
 
-    def __init__(self, package: str) -> None:
-        self.package = package
+
+class _Module:
+    """The imports the type store needs, gathered while its classes are written."""
+
+    def __init__(self) -> None:
         self.imports: set[tuple[str, str]] = {
             ('tf_demo.msgs._message', 'Message'),
             ('tf_demo.msgs._message', 'blank_instance_maker'),
@@ -88,13 +94,11 @@ class _Module:
         self.imports.add((module, name))
 
     def class_name(self, msgtype: str) -> str:
-        """Return the name of the class of ``msgtype`` here (importing it from its module)."""
-        package, _, name = msgtype.split('/')
+        """Return the name of the class of ``msgtype`` in the store (names must not clash)."""
+        name = msgtype.rsplit('/', 1)[1]
         if self.names.setdefault(name, msgtype) != msgtype:
-            msg = f'{self.package}: two classes named {name}: {self.names[name]}, {msgtype}'
+            msg = f'two classes named {name}: {self.names[name]}, {msgtype}'
             raise SchemaError(msg)
-        if package != self.package:
-            self.need(f'tf_demo.msgs.{package}', name)
         return name
 
     def element_type(self, field: FieldSpec) -> str:
@@ -297,61 +301,94 @@ def _imports(module: _Module) -> list[str]:
     return lines
 
 
-def render(package: str) -> str:
-    """Return the source of the generated module of ROS package ``package``."""
-    module = _Module(package)
-    module.need('typing', 'NoReturn')
+def _package_types(package: str) -> tuple[list[MessageSpec], list[str]]:
+    """Return the message specs and the service types of ROS package ``package``, table order."""
     specs = [spec_for(msgtype) for msgtype in DEFINITIONS if msgtype.startswith(f'{package}/')]
     services = [srvtype for srvtype in SERVICE_DEFINITIONS if srvtype.startswith(f'{package}/')]
-    blocks = [_message_class(module, spec) for spec in specs]
-    if services:
-        module.need('tf_demo.msgs._message', 'Service')
+    return specs, services
+
+
+def _head(docstring: str) -> list[str]:
+    """Return the licence, the generated mark and the module docstring."""
+    return [_licence_header().rstrip('\n'), '', _GENERATED.rstrip('\n'), '', docstring]
+
+
+def render_store() -> str:
+    """Return the source of the type store: every message and service class of the table."""
+    module = _Module()
+    module.need('typing', 'NoReturn')
+    module.need('tf_demo.msgs._message', 'Service')
+    blocks = []
+    for package in packages():
+        specs, services = _package_types(package)
+        blocks += [_message_class(module, spec) for spec in specs]
         blocks += [_service_class(srvtype) for srvtype in services]
     if module.typing_imports:
         module.need('typing', 'TYPE_CHECKING')
-    public = sorted(
-        [spec.name for spec in specs if spec.interface == 'msg']
-        + [srvtype.rsplit('/', 1)[1] for srvtype in services]
-    )
-    kinds = 'messages and services' if services else 'messages'
     lines = [
-        _licence_header().rstrip('\n'),
-        '',
-        _GENERATED.rstrip('\n'),
-        '',
-        f'"""The standalone world\'s ``{package}`` {kinds} (rclpy-compatible, typed)."""',
+        *_head(
+            '"""Every message and service class of tf_demo.msgs; import them from their '
+            'package module."""'
+        ),
         '',
         *_imports(module),
-        '',
-        *_sequence_literal('', '__all__ = ', [repr(name) for name in public], tuple_=False),
     ]
     for block in blocks:
         lines += ['', '', *block]
     return '\n'.join(lines) + '\n'
 
 
+def _reexport(name: str) -> str:
+    """Return the import that re-exports ``name`` from the store (``X as X``: mypy's form)."""
+    line = f'from tf_demo.msgs._types import {name} as {name}'
+    if _fits(line):
+        return line
+    return f'from tf_demo.msgs._types import (\n{_INDENT}{name} as {name},\n)'
+
+
+def render_package(package: str) -> str:
+    """Return the source of ROS package ``package``'s module: its classes, from the store."""
+    specs, services = _package_types(package)
+    names = [spec.name for spec in specs] + [srvtype.rsplit('/', 1)[1] for srvtype in services]
+    kinds = 'messages and services' if services else 'messages'
+    lines = [
+        *_head(f'"""The standalone world\'s ``{package}`` {kinds} (rclpy-compatible, typed)."""'),
+        '',
+        *(_reexport(name) for name in sorted(names, key=str.lower)),
+    ]
+    return '\n'.join(lines) + '\n'
+
+
+def generated_sources() -> dict[str, str]:
+    """Return every generated file's name and source: the store and one module a package."""
+    sources = {STORE: render_store()}
+    sources.update({f'{package}.py': render_package(package) for package in packages()})
+    return sources
+
+
 def stale_modules(directory: Path = PACKAGE_DIR) -> list[Path]:
-    """Return the generated modules in ``directory`` that differ from what the table gives."""
+    """Return the generated files in ``directory`` that differ from what the table gives."""
     stale = []
-    for package in packages():
-        path = directory / f'{package}.py'
-        if not path.is_file() or read_text_file(path) != render(package):
+    for name, source in generated_sources().items():
+        path = directory / name
+        if not path.is_file() or read_text_file(path) != source:
             stale.append(path)
     return stale
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Check (default) or ``--write`` the generated modules; return the exit status."""
+    """Check (default) or ``--write`` the generated files; return the exit status."""
     parser = argparse.ArgumentParser(description='Write the typed message modules.')
-    parser.add_argument('--write', action='store_true', help='rewrite the modules that differ')
+    parser.add_argument('--write', action='store_true', help='rewrite the files that differ')
     parser.add_argument(
         '--directory', type=Path, default=PACKAGE_DIR, help='where they are (default: here)'
     )
     args = parser.parse_args(argv)
+    sources = generated_sources()
     stale = stale_modules(args.directory)
     for path in stale:
         if args.write:
-            write_text_atomically(path, render(path.stem))
+            write_text_atomically(path, sources[path.name])
         print(f'{"wrote" if args.write else "out of date"}: {path}')
     return 1 if stale and not args.write else 0
 

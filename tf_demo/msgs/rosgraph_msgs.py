@@ -17,41 +17,4 @@
 
 """The standalone world's ``rosgraph_msgs`` messages (rclpy-compatible, typed)."""
 
-from __future__ import annotations
-
-from typing import NoReturn
-
-from tf_demo.msgs._message import blank_instance_maker
-from tf_demo.msgs._message import Message
-from tf_demo.msgs.builtin_interfaces import Time
-
-__all__ = ['Clock']
-
-
-class Clock(Message):
-    """rosgraph_msgs/msg/Clock."""
-
-    __msgtype__ = 'rosgraph_msgs/msg/Clock'
-    __slots__ = ('clock',)
-    __hash__ = None  # mutable: unhashable, as in rclpy
-    clock: Time
-
-    def __new__(
-        cls,
-        *positional_: NoReturn,
-        clock: Time | None = None,
-        **unknown_: NoReturn,
-    ) -> Clock:
-        if positional_ or unknown_:
-            cls._reject_arguments(positional_, unknown_)
-        self = _blank_clock()
-        self.clock = Time() if clock is None else clock
-        return self
-
-    def __eq__(self, other: object) -> bool:
-        if type(other) is not Clock:
-            return False if isinstance(other, Message) else NotImplemented
-        return not (self.clock != other.clock)
-
-
-_blank_clock = blank_instance_maker(Clock)
+from tf_demo.msgs._types import Clock as Clock
