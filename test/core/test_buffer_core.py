@@ -261,16 +261,15 @@ def test_frame_validation_texts():
         error_text(LookupException, core.lookup_transform, 'foo', 'baz', 0)
         == '"baz" passed to lookupTransform argument source_frame does not exist. '
     )
-    ok, text = core.can_transform('foo', 'baz', 0, return_debug_tuple=True)
-    assert not ok
-    assert text == (
+    assert not core.can_transform('foo', 'baz', 0)
+    assert core.transform_error('foo', 'baz', 0) == (
         'Invalid frame ID "baz" passed to canTransform argument source_frame - frame does not '
         'exist'
     )
-    assert core.can_transform('', 'bar', 0, return_debug_tuple=True) == (
-        False,
+    assert not core.can_transform('', 'bar', 0)
+    assert core.transform_error('', 'bar', 0) == (
         'Invalid frame ID "" passed to canTransform argument target_frame - in tf2 frame_ids '
-        'cannot be empty',
+        'cannot be empty'
     )
 
 
@@ -360,7 +359,8 @@ def test_connectivity_text():
     )
     assert error_text(ConnectivityException, core.lookup_transform, 'a', 'd', 0) == text
     assert error_text(ConnectivityException, core.lookup_transform, 'a', 'd', S) == text
-    assert core.can_transform('a', 'd', S, return_debug_tuple=True) == (False, text)
+    assert not core.can_transform('a', 'd', S)
+    assert core.transform_error('a', 'd', S) == text
 
 
 def test_loop_is_reported():
@@ -399,9 +399,8 @@ def test_full_lookup_example():
     assert result.stamp_ns == 3 * S
     core.set_transform('foo', 'bar', 4 * S, (2.0, 0, 0), IDENTITY)
     assert core.can_transform_full('bar', 3 * S, 'bar', 2 * S + S // 2, 'foo')
-    ok, text = core.can_transform_full('bar', 9 * S, 'bar', 2 * S, 'foo', True)
-    assert not ok
-    assert 'into the future' in text
+    assert not core.can_transform_full('bar', 9 * S, 'bar', 2 * S, 'foo')
+    assert 'into the future' in core.transform_error_full('bar', 9 * S, 'bar', 2 * S, 'foo')
     assert 'fixed_frame does not exist' in error_text(
         LookupException, core.lookup_transform_full, 'bar', 0, 'bar', 0, 'nope'
     )

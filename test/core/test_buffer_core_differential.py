@@ -185,11 +185,13 @@ def _run_op(core: BufferCore, op: list[Any]) -> Result | None:
         elif kind == 'lookup_full':
             result = core.lookup_transform_full(op[1], op[2], op[3], op[4], op[5])
         elif kind == 'can':
-            debug = core.can_transform(op[1], op[2], op[3], return_debug_tuple=True)
-            assert isinstance(debug, tuple)
-            return {'ok': debug[0], 'msg': debug[1]}
+            text = core.transform_error(op[1], op[2], op[3])
+            assert core.can_transform(op[1], op[2], op[3]) == (not text)
+            return {'ok': not text, 'msg': text}
         elif kind == 'can_full':
-            return {'ok': core.can_transform_full(op[1], op[2], op[3], op[4], op[5])}
+            full = (op[1], op[2], op[3], op[4], op[5])
+            assert core.can_transform_full(*full) == (not core.transform_error_full(*full))
+            return {'ok': core.can_transform_full(*full)}
         elif kind == 'lct':
             return {'stamp': core.get_latest_common_time(op[1], op[2])}
         elif kind == 'chain':

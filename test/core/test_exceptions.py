@@ -85,10 +85,10 @@ def test_full_lookup_labels_in_order():
         str(lookup_info.value)
         == '"q" passed to lookupTransform argument target_frame does not exist. '
     )
-    assert core.can_transform_full('a', 0, 'b', 0, '', True) == (
-        False,
+    assert not core.can_transform_full('a', 0, 'b', 0, '')
+    assert core.transform_error_full('a', 0, 'b', 0, '') == (
         'Invalid frame ID "" passed to canTransform argument fixed_frame - in tf2 frame_ids '
-        'cannot be empty',
+        'cannot be empty'
     )
 
 

@@ -198,9 +198,9 @@ def tool_main(
     tool: str,
     args: Sequence[str] | None,
     parser: argparse.ArgumentParser,
-    *,
     options_error: Callable[[argparse.Namespace], str | None],
     live: Callable[[argparse.Namespace], int],
+    *,
     from_snapshot: Callable[[argparse.Namespace, Snapshot], int] | None = None,
     bad_snapshot: int = 1,
 ) -> int:

@@ -123,8 +123,8 @@ def _monitor(options: argparse.Namespace) -> int:
             framea, frameb = options.frames
             last_log = -1.0
             while transport.ok():
-                ready, reason = core.can_transform(framea, frameb, 0, return_debug_tuple=True)
-                if ready:
+                reason = core.transform_error(framea, frameb, 0)
+                if not reason:
                     break
                 if time.monotonic() - last_log >= 1.0:
                     last_log = time.monotonic()

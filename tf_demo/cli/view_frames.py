@@ -163,12 +163,7 @@ def _draw_snapshot(options: argparse.Namespace, snapshot: Snapshot) -> int:
 def main(args: list[str] | None = None) -> int:
     """Run view_frames with ``args`` (default: ``sys.argv[1:]``)."""
     return tool_main(
-        TOOL,
-        args,
-        build_parser(),
-        options_error=options_error,
-        live=_listen_and_draw,
-        from_snapshot=_draw_snapshot,
+        TOOL, args, build_parser(), options_error, _listen_and_draw, from_snapshot=_draw_snapshot
     )
 
 

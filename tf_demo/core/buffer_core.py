@@ -38,9 +38,7 @@ from collections.abc import Sequence
 import logging
 import math
 import threading
-from typing import Literal
 from typing import NamedTuple
-from typing import overload
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -370,35 +368,18 @@ class BufferCore(FrameTree):
             (ox + t2[0], oy + t2[1], oz + t2[2]), math3d.quat_from_matrix(basis), stamp
         )
 
-    @overload
-    def can_transform(
-        self,
-        target: str,
-        source: str,
-        time_ns: int,
-        return_debug_tuple: Literal[False] = False,
-    ) -> bool: ...
+    def can_transform(self, target: str, source: str, time_ns: int) -> bool:
+        """Return whether ``lookup_transform`` would succeed (never raises tf2 errors)."""
+        return not self.transform_error(target, source, time_ns)
 
-    @overload
-    def can_transform(
-        self, target: str, source: str, time_ns: int, return_debug_tuple: Literal[True]
-    ) -> tuple[bool, str]: ...
-
-    @overload
-    def can_transform(
-        self, target: str, source: str, time_ns: int, return_debug_tuple: bool
-    ) -> bool | tuple[bool, str]: ...
-
-    def can_transform(
-        self, target: str, source: str, time_ns: int, return_debug_tuple: bool = False
-    ) -> bool | tuple[bool, str]:
+    def transform_error(self, target: str, source: str, time_ns: int) -> str:
         """
-        Return whether ``lookup_transform`` would succeed (never raises tf2 errors).
+        Return why ``lookup_transform`` would fail, in tf2's words; ``''`` when it would succeed.
 
-        With ``return_debug_tuple`` the result is ``(ok, error text)`` as in tf2_ros.
+        tf2_ros's ``can_transform(..., return_debug_tuple=True)`` gives ``(not text, text)``.
         """
         if target == source:
-            return (True, '') if return_debug_tuple else True
+            return ''
         with self._lock:
             target_id, text = self._validate_quietly('canTransform argument target_frame', target)
             if target_id:
@@ -406,56 +387,20 @@ class BufferCore(FrameTree):
                     'canTransform argument source_frame', source
                 )
                 if source_id:
-                    error = self._can_walk(target_id, source_id, time_ns)
-                    text = error or ''
-        ok = not text
-        return (ok, text) if return_debug_tuple else ok
+                    text = self._can_walk(target_id, source_id, time_ns) or ''
+        return text
 
-    @overload
     def can_transform_full(
-        self,
-        target: str,
-        target_time_ns: int,
-        source: str,
-        source_time_ns: int,
-        fixed: str,
-        return_debug_tuple: Literal[False] = False,
-    ) -> bool: ...
-
-    @overload
-    def can_transform_full(
-        self,
-        target: str,
-        target_time_ns: int,
-        source: str,
-        source_time_ns: int,
-        fixed: str,
-        return_debug_tuple: Literal[True],
-    ) -> tuple[bool, str]: ...
-
-    @overload
-    def can_transform_full(
-        self,
-        target: str,
-        target_time_ns: int,
-        source: str,
-        source_time_ns: int,
-        fixed: str,
-        return_debug_tuple: bool,
-    ) -> bool | tuple[bool, str]: ...
-
-    def can_transform_full(  # noqa: PLR0917 (tf2's argument order)
-        self,
-        target: str,
-        target_time_ns: int,
-        source: str,
-        source_time_ns: int,
-        fixed: str,
-        return_debug_tuple: bool = False,
-    ) -> bool | tuple[bool, str]:
+        self, target: str, target_time_ns: int, source: str, source_time_ns: int, fixed: str
+    ) -> bool:
         """Return whether ``lookup_transform_full`` would succeed (never raises tf2 errors)."""
+        return not self.transform_error_full(target, target_time_ns, source, source_time_ns, fixed)
+
+    def transform_error_full(
+        self, target: str, target_time_ns: int, source: str, source_time_ns: int, fixed: str
+    ) -> str:
+        """Return why ``lookup_transform_full`` would fail (tf2's text); ``''`` if it would not."""
         with self._lock:
-            text = ''
             ids = []
             for label, frame in (
                 ('canTransform argument target_frame', target),
@@ -464,15 +409,14 @@ class BufferCore(FrameTree):
             ):
                 frame_id, text = self._validate_quietly(label, frame)
                 if not frame_id:
-                    break
+                    return text
                 ids.append(frame_id)
-            if not text:
-                target_id, source_id, fixed_id = ids
-                text = self._can_walk(target_id, fixed_id, target_time_ns) or ''
-                if not text:
-                    text = self._can_walk(fixed_id, source_id, source_time_ns) or ''
-        ok = not text
-        return (ok, text) if return_debug_tuple else ok
+            target_id, source_id, fixed_id = ids
+            return (
+                self._can_walk(target_id, fixed_id, target_time_ns)
+                or self._can_walk(fixed_id, source_id, source_time_ns)
+                or ''
+            )
 
     def lookup_velocity(
         self, tracking: str, observation: str, time_ns: int, averaging_ns: int

@@ -184,9 +184,8 @@ class _Query(NamedTuple):
 
     def answer(self) -> tuple[bool, str]:
         """Return ``(possible, error text)`` now."""
-        return self.core.can_transform(
-            self.target_frame, self.source_frame, self.time_ns, return_debug_tuple=True
-        )
+        text = self.core.transform_error(self.target_frame, self.source_frame, self.time_ns)
+        return not text, text
 
     def ready(self) -> bool:
         """Whether the lookup would succeed now."""
@@ -213,7 +212,8 @@ class _FullQuery(NamedTuple):
 
     def answer(self) -> tuple[bool, str]:
         """Return ``(possible, error text)`` now."""
-        return self.core.can_transform_full(*self.args, return_debug_tuple=True)
+        text = self.core.transform_error_full(*self.args)
+        return not text, text
 
     def ready(self) -> bool:
         """Whether the lookup would succeed now."""
@@ -456,9 +456,7 @@ class Buffer:
         self, target_frame: str, source_frame: str, time: TimeLike
     ) -> tuple[bool, str]:
         """Return ``(possible, error_text)`` now, without waiting."""
-        return self.core.can_transform(
-            target_frame, source_frame, ns_from_time(time), return_debug_tuple=True
-        )
+        return _query(self.core, target_frame, source_frame, time).answer()
 
     def can_transform_full_core(
         self,
