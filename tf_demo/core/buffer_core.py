@@ -197,9 +197,14 @@ class BufferCore(FrameTree):
             parent_id = self._ids.get(parent)
             if parent_id is None:
                 parent_id = self._intern(parent)
-            stored = cache.insert(stamp_ns, (tx, ty, tz, rx, ry, rz, rw, parent_id))
+            sample = (tx, ty, tz, rx, ry, rz, rw, parent_id)
+            # A new parent (or a new static value) changes the shape the path plans rely on.
+            reshaped = cache.latest[1] != parent_id or (is_static and cache.get_data(0) != sample)
+            stored = cache.insert(stamp_ns, sample)
             if stored:
                 self._authority[child_id] = authority
+                if reshaped:
+                    self._shape_version += 1
             callbacks = self._callbacks_snapshot
         if not stored:
             self._log(
@@ -287,6 +292,7 @@ class BufferCore(FrameTree):
             for cache in self._caches:
                 if cache is not None:
                     cache.clear()
+            self._shape_version += 1
 
     # ------------------------------------------------------------------ latest common time
 
@@ -380,7 +386,13 @@ class BufferCore(FrameTree):
         """
         if target == source:
             return ''
+        ids = self._ids
         with self._lock:
+            # Interned names never start with '/' except '//x' -> '/x', which tf2 refuses here.
+            target_id = ids.get(target, 0)
+            source_id = ids.get(source, 0)
+            if target_id and source_id and target[0] != '/' and source[0] != '/':
+                return self._can_walk(target_id, source_id, time_ns) or ''
             target_id, text = self._validate_quietly('canTransform argument target_frame', target)
             if target_id:
                 source_id, text = self._validate_quietly(

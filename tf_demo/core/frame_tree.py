@@ -44,6 +44,10 @@ from tf_demo.core.exceptions import TransformException
 from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import FrameInfo
 from tf_demo.core.frames_format import NO_AUTHORITY
+from tf_demo.core.path_plan import common_time
+from tf_demo.core.path_plan import has_data
+from tf_demo.core.path_plan import PathPlan
+from tf_demo.core.path_plan import plan_path
 from tf_demo.core.time_cache import ERROR_BACKWARD_EXTRAPOLATION
 from tf_demo.core.time_cache import ERROR_FORWARD_EXTRAPOLATION
 from tf_demo.core.time_cache import ERROR_NO_DATA_FOR_EXTRAPOLATION
@@ -63,6 +67,8 @@ __all__ = [
 ]
 
 MAX_GRAPH_DEPTH = 1000
+#: Plans remembered at most (all are dropped beyond: a client asking ever new pairs).
+_MAX_PLANS = 4096
 NO_PARENT = 'NO_PARENT'
 
 Cache = TimeCache | StaticCache
@@ -227,6 +233,10 @@ class FrameTree:
         self._names: list[str] = [NO_PARENT]
         self._caches: list[Cache | None] = [None]
         self._authority: dict[int, str] = {}
+        #: Bumped whenever a link appears, changes parent or static value, or caches are cleared.
+        self._shape_version = 0
+        self._plans: dict[tuple[int, int], PathPlan | None] = {}
+        self._plans_version = 0
 
     # ------------------------------------------------------------------ frame ids
 
@@ -321,6 +331,21 @@ class FrameTree:
         )
         raise _extrapolation_error(code, text + self._walk_suffix(source_id, target_id))
 
+    # ------------------------------------------------------------------ path plans
+
+    def _plan(self, target_id: int, source_id: int) -> PathPlan | None:
+        """Return the remembered plan between two different frames (made on first use)."""
+        plans = self._plans
+        if self._plans_version != self._shape_version or len(plans) > _MAX_PLANS:
+            plans.clear()
+            self._plans_version = self._shape_version
+        key = (target_id, source_id)
+        try:
+            return plans[key]
+        except KeyError:
+            plan = plans[key] = plan_path(self._caches, target_id, source_id, MAX_GRAPH_DEPTH)
+            return plan
+
     # ------------------------------------------------------------------ latest common time
 
     def _latest_links(self, frame: int, stop: Container[int]) -> tuple[list[tuple[int, int]], int]:
@@ -392,7 +417,11 @@ class FrameTree:
         if source_id == target_id:
             return _IDENTITY_T, _IDENTITY_Q, time_ns
         if time_ns == 0:
-            time_ns = self._latest_common_time(target_id, source_id)
+            plan = self._plan(target_id, source_id)
+            if plan is not None:
+                time_ns = common_time(plan)
+            else:
+                time_ns = self._latest_common_time(target_id, source_id)
         caches = self._caches
 
         # Source side: accumulate top_T_source.
@@ -472,6 +501,9 @@ class FrameTree:
     def _can_walk(self, target_id: int, source_id: int, time_ns: int) -> str | None:
         """Run the walk on parents only; return None when possible, else tf2's error text."""
         if source_id == target_id:
+            return None
+        plan = self._plan(target_id, source_id)
+        if plan is not None and has_data(plan, time_ns or common_time(plan)):
             return None
         if time_ns == 0:
             try:

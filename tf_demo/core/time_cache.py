@@ -171,6 +171,7 @@ class TimeCache:
         '_view',
         'child_id',
         'latest',
+        'mixed',
     )
 
     def __init__(self, max_storage_ns: int = DEFAULT_CACHE_TIME_NS, child_id: int = 0) -> None:
@@ -183,6 +184,8 @@ class TimeCache:
         self._view: CacheView | None = None
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
         self.latest: tuple[int, int] = (0, 0)
+        #: Some insert since the last clear brought a parent other than the newest sample's.
+        self.mixed = False
         self._arrays: CacheArrays | None = None
 
     # --- insertion -----------------------------------------------------------------------
@@ -225,6 +228,8 @@ class TimeCache:
                         return True
                     index -= 1
         self._version += 1
+        if sample[7] != self.latest[1] and self.latest[1]:
+            self.mixed = True
         if position == end:
             stamps.append(stamp_ns)
             self._samples.append(sample)
@@ -242,6 +247,7 @@ class TimeCache:
         self._version += 1
         self._view = None
         self.latest = (0, 0)
+        self.mixed = False
 
     # --- queries -------------------------------------------------------------------------
 
