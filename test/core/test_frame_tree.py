@@ -16,8 +16,8 @@
 Tests of tf_demo/core/frame_tree.py on its own: one side of the walk, the walks, the chain.
 
 BufferCore's tests (test_buffer_core*.py, the differential test against tf2's C++ core) cover
-these through the public API; here the tree is built by hand, cache by cache, so each outcome
-of :func:`accumulate_side` and each branch of the walks is reached on purpose.
+these through the public API; here the tree is built by hand, cache by cache, so each shape of
+route and each branch of the walks is reached on purpose.
 """
 
 from __future__ import annotations
@@ -32,14 +32,11 @@ from tf_demo.core import math3d
 from tf_demo.core.exceptions import ConnectivityException
 from tf_demo.core.exceptions import ExtrapolationException
 from tf_demo.core.exceptions import LookupException
-from tf_demo.core.frame_tree import accumulate_side
 from tf_demo.core.frame_tree import FrameTree
 from tf_demo.core.frame_tree import MAX_GRAPH_DEPTH
-from tf_demo.core.frame_tree import SIDE_LOOP
-from tf_demo.core.frame_tree import SIDE_NO_CACHE
-from tf_demo.core.frame_tree import SIDE_NO_DATA
-from tf_demo.core.frame_tree import SIDE_REACHED_OTHER
-from tf_demo.core.frame_tree import SIDE_REACHED_STOP
+from tf_demo.core.links import ROUTE_ACROSS
+from tf_demo.core.links import ROUTE_DOWN
+from tf_demo.core.links import ROUTE_UP
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
@@ -99,67 +96,65 @@ _links = st.lists(
 
 @settings(max_examples=100, deadline=None)
 @given(_links)
-def test_one_side_accumulates_top_t_frame_as_math3d_composes_it(
+def test_a_chain_is_one_route_up_composed_as_math3d_composes_it(
     drawn: list[tuple[math3d.Vec3, tuple[int, float]]],
 ) -> None:
-    """A chain f0 <- f1 <- ... <- fn: the side from fn ends at f0 with f0_T_fn."""
+    """A chain f0 <- f1 <- ... <- fn: fn to f0 is a route up, f0_T_fn its composition."""
     tree = FrameTree()
     expected: Link = (math3d.ZERO_VEC, math3d.IDENTITY_QUAT)
     for index, (translation, (axis, angle)) in enumerate(drawn):
         link = (translation, _turn(axis, angle))
         _put(tree, f'f{index}', f'f{index + 1}', link)
         expected = _compose(expected, link)
-    bottom = tree._ids[f'f{len(drawn)}']
-    outcome, frame, last, depth, *values = accumulate_side(tree._caches, bottom, 0, -1, 5 * S)
-    assert (outcome, frame, last, depth) == (
-        SIDE_NO_CACHE,
-        tree._ids['f0'],
-        tree._ids['f1'],
-        len(drawn),
-    )
-    assert _close(tuple(values), (*expected[0], *expected[1]))
+    top, bottom = tree._ids['f0'], tree._ids[f'f{len(drawn)}']
+    shape, source_links, target_links = tree._route(top, bottom, 5 * S)
+    assert (shape, len(source_links), target_links) == (ROUTE_UP, len(drawn), ())
+    translation, rotation, stamp = tree._walk(top, bottom, 5 * S)
+    assert stamp == 5 * S
+    assert _close((*translation, *rotation), (*expected[0], *expected[1]))
 
 
-def test_one_side_stops_at_stop_at_the_other_frame_and_without_data() -> None:
+def test_routes_go_up_down_and_across_with_the_links_tf2s_walk_takes() -> None:
     tree = FrameTree()
     shift: Link = ((1.0, 0.0, 0.0), math3d.IDENTITY_QUAT)
     _put(tree, 'a', 'b', shift)
     _put(tree, 'b', 'c', shift)
     _put(tree, 'c', 'd', shift, 2 * S, static=False)
     _put(tree, 'c', 'd', shift, 3 * S, static=False)
+    _put(tree, 'a', 'e', shift)
     ids = tree._ids
     caches = tree._caches
 
-    outcome, frame, last, depth, x, *_ = accumulate_side(caches, ids['d'], ids['b'], -1, 2 * S)
-    assert (outcome, frame, last, depth, x) == (SIDE_REACHED_STOP, ids['b'], ids['c'], 2, 2.0)
-
-    # The other frame is reached once its data was read: its own link is not accumulated.
-    outcome, frame, last, depth, x, *_ = accumulate_side(caches, ids['d'], 0, ids['b'], 2 * S)
-    assert (outcome, frame, last, depth, x) == (SIDE_REACHED_OTHER, ids['b'], ids['c'], 2, 2.0)
-
-    # d has data from 2 s to 3 s only: at 4 s the walk stops at d, nothing accumulated.
-    outcome, frame, last, depth, *values = accumulate_side(caches, ids['d'], 0, -1, 4 * S)
-    assert (outcome, frame, last, depth) == (SIDE_NO_DATA, ids['d'], ids['d'], 0)
-    assert values == [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]
-
-    # Time 0 reads the newest sample; an interior time interpolates.
-    assert accumulate_side(caches, ids['d'], 0, -1, 0)[:4] == (
-        SIDE_NO_CACHE,
-        ids['a'],
-        ids['b'],
-        3,
+    # The target above the source: the source's links up to (not with) the target's.
+    assert tree._route(ids['b'], ids['d'], 2 * S) == (
+        ROUTE_UP, [caches[ids['d']], caches[ids['c']]], (),
+    )  # fmt: skip
+    # The source above the target: the target's links up to the source's.
+    assert tree._route(ids['d'], ids['b'], 2 * S) == (
+        ROUTE_DOWN, (), [caches[ids['d']], caches[ids['c']]],
+    )  # fmt: skip
+    # Across: both sides up to the top, a (which has no cache).
+    assert tree._route(ids['e'], ids['d'], 2 * S) == (
+        ROUTE_ACROSS,
+        [caches[ids['d']], caches[ids['c']], caches[ids['b']]],
+        [caches[ids['e']]],
     )
-    assert accumulate_side(caches, ids['d'], 0, -1, 2 * S + S // 2)[4] == 3.0
+    # d has data from 2 s to 3 s only: at 4 s tf2's walk fails on d.
+    with pytest.raises(ExtrapolationException, match='extrapolation into the future'):
+        tree._route(ids['e'], ids['d'], 4 * S)
+    assert tree._walk(ids['a'], ids['d'], 2 * S + S // 2)[0][0] == 3.0
 
 
-def test_one_side_gives_up_on_a_loop_after_max_graph_depth_links() -> None:
+def test_a_loop_is_tf2s_lookup_error() -> None:
     tree = FrameTree()
     identity: Link = (math3d.ZERO_VEC, math3d.IDENTITY_QUAT)
     _put(tree, 'b', 'a', identity)
     _put(tree, 'a', 'b', identity)
-    outcome, _, _, depth, *_ = accumulate_side(tree._caches, tree._ids['a'], 0, -1, S)
-    assert outcome == SIDE_LOOP
-    assert depth == MAX_GRAPH_DEPTH + 1
+    _put(tree, 'a', 'c', identity)
+    with pytest.raises(LookupException, match='contains a loop'):
+        tree._route(tree._ids['c'], tree._ids['b'], S)
+    assert tree._plan(tree._ids['c'], tree._ids['b']) is None
+    assert MAX_GRAPH_DEPTH == 1000  # tf2's limit on a walk's length
 
 
 def _fork() -> FrameTree:

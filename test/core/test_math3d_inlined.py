@@ -16,7 +16,7 @@
 The hot paths' inlined rotation math, pinned to :mod:`tf_demo.core.math3d` within 1e-12.
 
 math3d is the one source of the rotation math.  The lookup walk
-(``frame_tree.accumulate_side``) and the vectorised walk (``_batch`` with the interval
+(``links.accumulate_links``) and the vectorised walk (``_batch`` with the interval
 constants of ``TimeCache.arrays``) inline lerp, slerp and composition for speed, and math3d
 itself has a fast route (``canonical_quat``'s ``q / |q|``) and vectorised copies (``*_batch``);
 each test below names the copy it pins and compares it with the scalar original on drawn inputs
@@ -37,7 +37,7 @@ import numpy as np
 import numpy.typing as npt
 import pytest
 from tf_demo.core import _batch
-from tf_demo.core import frame_tree
+from tf_demo.core import links
 from tf_demo.core import math3d
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
@@ -118,7 +118,7 @@ axes = (
 )
 
 
-# --- frame_tree.accumulate_side: the lookup walk -------------------------------------------
+# --- links.accumulate_links: the lookup walk -----------------------------------------------
 
 
 @given(moves, moves, spans, fractions)
@@ -130,11 +130,10 @@ axes = (
 def test_walk_interpolation_is_math3d_lerp_and_slerp(
     first: Transform, second: Transform, span: int, fraction: float
 ) -> None:
-    """Pins ``frame_tree.accumulate_side``'s inlined interpolate (lerp + slerp) to math3d."""
+    """Pins ``links.accumulate_links``'s inlined interpolate (lerp + slerp) to math3d."""
     time_ns = _lane_time(span, fraction)
-    caches: list[TimeCache | StaticCache | None] = [None, _dynamic(first, second, span), None]
-    outcome, frame, _, depth, *link = frame_tree.accumulate_side(caches, 1, 0, -1, time_ns)
-    assert (outcome, frame, depth) == (frame_tree.SIDE_NO_CACHE, PARENT, 1)
+    link = links.accumulate_links([_dynamic(first, second, span)], time_ns)
+    assert link is not None
     t, q = _expected_link(first, second, (time_ns - T0) / span)
     _assert_close(tuple(link[:3]), t, 'lerp')
     _assert_same_rotation(tuple(link[3:]), q)
@@ -145,16 +144,9 @@ def test_walk_interpolation_is_math3d_lerp_and_slerp(
 def test_walk_composition_is_math3d_compose(
     bottom: Transform, middle: Transform, top: Transform
 ) -> None:
-    """Pins ``frame_tree.accumulate_side``'s inlined ``link * acc`` to math3d.compose."""
-    caches: list[TimeCache | StaticCache | None] = [
-        None,
-        _static(bottom, 1),
-        _static(middle, 2),
-        _static(top, 3),
-        None,
-    ]
-    outcome, frame, _, depth, *acc = frame_tree.accumulate_side(caches, 1, 0, -1, 0)
-    assert (outcome, frame, depth) == (frame_tree.SIDE_NO_CACHE, 4, 3)
+    """Pins ``links.accumulate_links``'s inlined ``link * acc`` to math3d.compose."""
+    acc = links.accumulate_links([_static(bottom, 1), _static(middle, 2), _static(top, 3)], 0)
+    assert acc is not None
     t, q = math3d.compose(middle[0], middle[1], bottom[0], bottom[1])  # 3_T_1
     t, q = math3d.compose(top[0], top[1], t, q)  # 4_T_1
     _assert_close(tuple(acc[:3]), t, 'compose translation')

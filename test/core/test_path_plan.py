@@ -30,9 +30,12 @@ from hypothesis import settings
 from hypothesis import strategies as st
 from tf_demo.core import BufferCore
 from tf_demo.core.exceptions import TransformException
+from tf_demo.core.links import ROUTE_ACROSS
+from tf_demo.core.links import ROUTE_UP
 from tf_demo.core.path_plan import common_time
 from tf_demo.core.path_plan import has_data
 from tf_demo.core.path_plan import PathPlan
+from tf_demo.core.time_cache import StaticCache
 
 S = 1_000_000_000
 FRAMES = ['a', 'b', 'c', 'd', 'e']
@@ -80,6 +83,18 @@ def _answer(core: BufferCore, target: str, source: str, time_ns: int) -> tuple[A
     )
 
 
+def _assert_same(planned: tuple[Any, ...], walked: tuple[Any, ...]) -> None:
+    """The same answers; numbers within 1e-12 (a plan composes runs of static links first)."""
+    assert planned[:2] == walked[:2]
+    if isinstance(walked[2][0], str):
+        assert planned[2] == walked[2]
+        return
+    (t1, q1, stamp1), (t2, q2, stamp2) = planned[2], walked[2]
+    assert stamp1 == stamp2
+    for a, b in zip((*t1, *q1), (*t2, *q2), strict=True):
+        assert abs(a - b) <= 1e-12, (planned, walked)
+
+
 @settings(max_examples=400, deadline=None)
 @given(_operations)
 def test_planned_answers_are_the_full_walks(operations: list[tuple[Any, ...]]) -> None:
@@ -97,8 +112,8 @@ def test_planned_answers_are_the_full_walks(operations: list[tuple[Any, ...]]) -
         else:
             _, target, source, second = operation
             time_ns = second * S // 2
-            assert _answer(planned, target, source, time_ns) == _answer(
-                walked, target, source, time_ns
+            _assert_same(
+                _answer(planned, target, source, time_ns), _answer(walked, target, source, time_ns)
             )
 
 
@@ -123,15 +138,22 @@ def test_a_plan_names_the_caches_the_walk_reads_and_the_common_ones() -> None:
     assert plan.reads == (odom, dock)
     assert plan.common == (dock, odom)
     assert common_time(plan) == 3 * S  # odom's newest: older than dock's
-    assert has_data(plan, 2 * S)
-    assert not has_data(plan, S)  # dock starts at 2 s
-    assert not has_data(plan, 4 * S)  # odom ends at 3 s
-    assert has_data(plan, 0)
+    assert has_data(plan.reads, 2 * S)
+    assert not has_data(plan.reads, S)  # dock starts at 2 s
+    assert not has_data(plan.reads, 4 * S)  # odom ends at 3 s
+    assert has_data(plan.reads, 0)
+    # The route: across the top (map), base's static link and odom; dock.
+    base = core._caches[ids['base']]
+    assert plan.route == (ROUTE_ACROSS, [base, odom], [dock])
+    assert plan.off_route == ()
     # The target above the source: only the source's side, up to and with the target's cache.
     up = core._plan(ids['odom'], ids['base'])
     assert up is not None
     assert (up.reads, up.common) == ((odom,), ())
     assert common_time(up) == 0
+    # odom's own data is read though its link is not taken: tf2 fails where odom has none.
+    assert up.route == (ROUTE_UP, [base], ())
+    assert up.off_route == (odom,)
 
 
 def test_plans_are_forgotten_when_the_tree_changes_shape() -> None:
@@ -178,3 +200,37 @@ def test_the_common_time_ignores_links_above_the_lowest_common_ancestor() -> Non
     assert _answer(planned, 'left', 'right', 0) == _answer(walked, 'left', 'right', 0)
     # The walk from right stops at hub (no data at 3 s) and left's side reaches hub: tf2 answers.
     assert planned.lookup_transform('left', 'right', 0).stamp_ns == 3 * S
+
+
+def test_runs_of_static_links_fold_into_one_link() -> None:
+    """REP-105's camera -> lidar -> base_link -> base_footprint becomes one static link."""
+    turn = (0.0, 0.0, 0.3826834323650898, 0.9238795325112867)
+    core, walked = _quiet()
+    for tree in (core, walked):
+        tree.set_transform('base_footprint', 'base_link', 0, (0.0, 0.0, 0.1), turn, '', True)
+        tree.set_transform('base_link', 'lidar_link', 0, (0.2, 0.0, 0.3), turn, '', True)
+        tree.set_transform('lidar_link', 'camera', 0, (0.05, 0.02, -0.1), turn, '', True)
+        for stamp in (1, 2):
+            tree.set_transform('odom', 'base_footprint', stamp * S, (float(stamp), 0, 0), turn)
+    ids = core._ids
+    plan = core._plan(ids['odom'], ids['camera'])
+    assert plan is not None
+    shape, source_links, target_links = plan.route
+    assert (shape, len(source_links), target_links) == (ROUTE_UP, 2, ())
+    folded, odom_link = source_links
+    assert isinstance(folded, StaticCache)
+    assert odom_link is core._caches[ids['base_footprint']]
+    for time_ns in (0, S, S + S // 3, 2 * S, 3 * S):
+        _assert_same(
+            _answer(core, 'odom', 'camera', time_ns), _answer(walked, 'odom', 'camera', time_ns)
+        )
+        _assert_same(
+            _answer(core, 'camera', 'odom', time_ns), _answer(walked, 'camera', 'odom', time_ns)
+        )
+    # A new static value changes the shape: the folded link is made again.
+    for tree in (core, walked):
+        tree.set_transform('base_link', 'lidar_link', 0, (0.9, 0.0, 0.3), turn, '', True)
+    replanned = core._plan(ids['odom'], ids['camera'])
+    assert replanned is not None
+    assert replanned is not plan
+    _assert_same(_answer(core, 'odom', 'camera', S), _answer(walked, 'odom', 'camera', S))

@@ -26,9 +26,7 @@ no lock: :class:`~tf_demo.core.buffer_core.BufferCore` calls it with its lock he
 
 from __future__ import annotations
 
-from bisect import bisect_right
 from collections.abc import Container
-import math
 from typing import NoReturn
 from typing import TYPE_CHECKING
 
@@ -44,6 +42,11 @@ from tf_demo.core.exceptions import TransformException
 from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import FrameInfo
 from tf_demo.core.frames_format import NO_AUTHORITY
+from tf_demo.core.links import compose_route
+from tf_demo.core.links import Route
+from tf_demo.core.links import ROUTE_ACROSS
+from tf_demo.core.links import ROUTE_DOWN
+from tf_demo.core.links import ROUTE_UP
 from tf_demo.core.path_plan import common_time
 from tf_demo.core.path_plan import has_data
 from tf_demo.core.path_plan import PathPlan
@@ -63,7 +66,6 @@ __all__ = [
     'NO_PARENT',
     'Cache',
     'FrameTree',
-    'accumulate_side',
 ]
 
 MAX_GRAPH_DEPTH = 1000
@@ -73,141 +75,21 @@ NO_PARENT = 'NO_PARENT'
 
 Cache = TimeCache | StaticCache
 
-_bisect_right = bisect_right
-_acos = math.acos
-_sin = math.sin
 #: The identity, shared: ``lookup_transform`` tests ``q is _IDENTITY_Q`` to skip canonicalising.
 _IDENTITY_T = math3d.ZERO_VEC
 _IDENTITY_Q = math3d.IDENTITY_QUAT
 
-# How one side of a walk ended (:func:`accumulate_side`, :meth:`FrameTree._climb`).
+# How one side of a walk ended (:meth:`FrameTree._climb`).
 SIDE_REACHED_STOP = 0
 SIDE_NO_CACHE = 1
 SIDE_NO_DATA = 2
 SIDE_REACHED_OTHER = 3
 SIDE_LOOP = 4
 
-SideResult = tuple[int, int, int, int, float, float, float, float, float, float, float]
 
-
-def accumulate_side(
-    caches: list[Cache | None], frame: int, stop: int, other: int, time_ns: int
-) -> SideResult:
-    """
-    Walk from ``frame`` towards the root, accumulating ``top_T_frame`` (one side of the walk).
-
-    This is one side of tf2's ``walkToTopParent`` with :meth:`TimeCache.get_data` (tf2's
-    ``findClosest`` and ``interpolate``) inlined: per link only locals, no tuple per link.  The
-    inlined lerp, slerp and composition are copies of :mod:`~tf_demo.core.math3d`'s, kept for
-    speed and pinned to it (within 1e-12) by ``test/core/test_math3d_inlined.py``.
-    The walk stops at ``stop``, at a frame without cache or data, at ``other`` (once its data
-    was read) or after ``MAX_GRAPH_DEPTH`` steps.
-
-    :returns: ``(outcome, frame, last_frame, depth, x, y, z, qx, qy, qz, qw)``: the outcome
-        (``SIDE_*``), the frame where the walk stopped, the last frame whose link was
-        accumulated (the start frame when none), the number of links accumulated and the
-        accumulated transform (identity when none).
-    """
-    depth = 0
-    last_frame = frame
-    x = y = z = qx = qy = qz = 0.0
-    qw = 1.0
-    acos = _acos
-    sin = _sin
-    while frame != stop:
-        cache = caches[frame]
-        if cache is None:
-            return SIDE_NO_CACHE, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-        if cache.is_static:
-            lx, ly, lz, px, py, pz, pw, parent = cache._sample
-        else:
-            view = cache._view
-            if view is None:
-                view = cache.view()
-            earliest, latest, scale, start, last, stamps, samples = view
-            if not (earliest < time_ns < latest and time_ns):
-                # At an end of the history, time 0 (the newest sample), or no data.
-                if start > last:
-                    return SIDE_NO_DATA, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-                if time_ns in (0, latest):
-                    lx, ly, lz, px, py, pz, pw, parent = samples[last]
-                elif time_ns == earliest:
-                    lx, ly, lz, px, py, pz, pw, parent = samples[start]
-                else:
-                    return SIDE_NO_DATA, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-            else:
-                # Interior: a linear guess (exact for evenly spaced streams), else bisect.
-                index = start + int((time_ns - earliest) * scale)
-                if index >= last:
-                    index = last - 1
-                one_stamp = stamps[index]
-                if one_stamp <= time_ns:
-                    two_stamp = stamps[index + 1]
-                    if two_stamp <= time_ns:
-                        index = _bisect_right(stamps, time_ns, index + 2, last + 1) - 1
-                        one_stamp = stamps[index]
-                        two_stamp = stamps[index + 1]
-                else:
-                    index = _bisect_right(stamps, time_ns, start, index) - 1
-                    one_stamp = stamps[index]
-                    two_stamp = stamps[index + 1]
-                lx, ly, lz, px, py, pz, pw, parent = samples[index]
-                tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1]
-                if parent1 == parent:
-                    # tf2's interpolate: lerp the translation, slerp the rotation.
-                    ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)
-                    keep = 1.0 - ratio
-                    lx = keep * lx + ratio * tx1
-                    ly = keep * ly + ratio * ty1
-                    lz = keep * lz + ratio * tz1
-                    dot = px * x1 + py * y1 + pz * z1 + pw * w1
-                    if dot < 0:
-                        theta = acos(-dot if -dot < 1.0 else 1.0)
-                        if theta != 0.0:
-                            d = 1.0 / sin(theta)
-                            s0 = sin(keep * theta) * d
-                            s1 = -sin(ratio * theta) * d
-                            px = px * s0 + x1 * s1
-                            py = py * s0 + y1 * s1
-                            pz = pz * s0 + z1 * s1
-                            pw = pw * s0 + w1 * s1
-                    else:
-                        theta = acos(dot if dot < 1.0 else 1.0)
-                        if theta != 0.0:
-                            d = 1.0 / sin(theta)
-                            s0 = sin(keep * theta) * d
-                            s1 = sin(ratio * theta) * d
-                            px = px * s0 + x1 * s1
-                            py = py * s0 + y1 * s1
-                            pz = pz * s0 + z1 * s1
-                            pw = pw * s0 + w1 * s1
-        if frame == other:
-            return SIDE_REACHED_OTHER, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-        if depth:
-            # link * acc.  p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations
-            # than tf2's q * v * conj(q), equal to about 1e-16.
-            ux = 2.0 * (py * z - pz * y)
-            uy = 2.0 * (pz * x - px * z)
-            uz = 2.0 * (px * y - py * x)
-            x, y, z = (
-                x + pw * ux + (py * uz - pz * uy) + lx,
-                y + pw * uy + (pz * ux - px * uz) + ly,
-                z + pw * uz + (px * uy - py * ux) + lz,
-            )
-            qx, qy, qz, qw = (
-                pw * qx + px * qw + py * qz - pz * qy,
-                pw * qy + py * qw + pz * qx - px * qz,
-                pw * qz + pz * qw + px * qy - py * qx,
-                pw * qw - px * qx - py * qy - pz * qz,
-            )
-        else:
-            x, y, z, qx, qy, qz, qw = lx, ly, lz, px, py, pz, pw
-        last_frame = frame
-        frame = parent
-        depth += 1
-        if depth > MAX_GRAPH_DEPTH:
-            return SIDE_LOOP, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
-    return SIDE_REACHED_STOP, frame, last_frame, depth, x, y, z, qx, qy, qz, qw
+def _links(caches: list[Cache | None], frames: list[int]) -> list[Cache]:
+    """Return the caches of ``frames`` (frames a walk accumulated: each has one)."""
+    return [cache for frame in frames if (cache := caches[frame]) is not None]
 
 
 def _extrapolation_error(code: int, text: str) -> ExtrapolationException:
@@ -412,60 +294,59 @@ class FrameTree:
         """
         Accumulate ``target_T_source`` at ``time_ns`` (tf2's ``walkToTopParent``).
 
+        The route comes from the remembered plan when every link on it has data at that time,
+        else from the full walk (:meth:`_route`), which raises tf2's errors.
+
         :returns: translation, raw (not re-canonicalised) rotation and the resolved time.
         """
         if source_id == target_id:
             return _IDENTITY_T, _IDENTITY_Q, time_ns
+        plan = self._plan(target_id, source_id)
         if time_ns == 0:
-            plan = self._plan(target_id, source_id)
             if plan is not None:
                 time_ns = common_time(plan)
             else:
                 time_ns = self._latest_common_time(target_id, source_id)
-        caches = self._caches
+        composed = None
+        if plan is not None and has_data(plan.off_route, time_ns):
+            composed = compose_route(plan.route, time_ns)
+        if composed is None:
+            composed = compose_route(self._route(target_id, source_id, time_ns), time_ns)
+            if composed is None:  # pragma: no cover - the walk found data on every link
+                raise AssertionError(self._walk_suffix(source_id, target_id))
+        return composed[0], composed[1], time_ns
 
-        # Source side: accumulate top_T_source.
-        outcome, frame, last, _, sx, sy, sz, sqx, sqy, sqz, sqw = accumulate_side(
-            caches, source_id, 0, target_id, time_ns
-        )
-        if outcome == SIDE_REACHED_OTHER:
-            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
+    def _route(self, target_id: int, source_id: int, time_ns: int) -> Route:
+        """
+        Walk the parents at ``time_ns`` as tf2's ``walkToTopParent`` does; return the route.
+
+        :raises LookupException: on a loop.
+        :raises ConnectivityException: if the frames are in two trees.
+        :raises ExtrapolationException: (a subclass) if a link has no data at ``time_ns``.
+        """
+        caches = self._caches
+        source_path: list[int] = []
+        outcome, top, failed_cache = self._climb(source_id, 0, target_id, time_ns, source_path)
+        source_links = _links(caches, source_path[:-1])
+        if outcome == SIDE_REACHED_OTHER or top == target_id:
+            return ROUTE_UP, source_links, ()
         if outcome == SIDE_LOOP:
             raise LookupException(self._loop_text())
-        top = last if outcome == SIDE_REACHED_STOP else frame
-        failed_cache = caches[frame] if outcome == SIDE_NO_DATA else None
-
-        if target_id == top:
-            # The target is the top itself: the inverse of an identity changes nothing.
-            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
-        # Target side: accumulate top_T_target.
-        outcome, frame, _, depth, tx, ty, tz, tqx, tqy, tqz, tqw = accumulate_side(
-            caches, target_id, top, source_id, time_ns
-        )
+        target_path: list[int] = []
+        outcome, _, no_data = self._climb(target_id, top, source_id, time_ns, target_path)
         if outcome == SIDE_NO_DATA:
-            self._walk_error(caches[frame], time_ns, source_id, target_id)
+            self._walk_error(no_data, time_ns, source_id, target_id)
         if outcome == SIDE_REACHED_OTHER:
-            iq = (-tqx, -tqy, -tqz, tqw)
-            return math3d.rotate_vector(iq, (-tx, -ty, -tz)), iq, time_ns
+            return ROUTE_DOWN, (), _links(caches, target_path[:-1])
         if outcome == SIDE_LOOP:
             raise LookupException(self._loop_text())
         if outcome == SIDE_NO_CACHE:
             if failed_cache is not None:
                 self._walk_error(failed_cache, time_ns, source_id, target_id)
             raise ConnectivityException(self._connectivity_text(source_id, target_id))
-
-        if not depth:
-            # The target is the top itself: the inverse of an identity changes nothing.
-            return (sx, sy, sz), (sqx, sqy, sqz, sqw), time_ns
-        # Full path: (top_T_target)^-1 * top_T_source.
-        iq = (-tqx, -tqy, -tqz, tqw)
-        ix, iy, iz = math3d.rotate_vector(iq, (-tx, -ty, -tz))
-        rx, ry, rz = math3d.rotate_vector(iq, (sx, sy, sz))
-        return (
-            (rx + ix, ry + iy, rz + iz),
-            math3d.quat_multiply(iq, (sqx, sqy, sqz, sqw)),
-            time_ns,
-        )
+        if not target_path:
+            return ROUTE_UP, source_links, ()
+        return ROUTE_ACROSS, source_links, _links(caches, target_path)
 
     def _climb(
         self, frame: int, stop: int, other: int, time_ns: int, path: list[int] | None = None
@@ -499,32 +380,18 @@ class FrameTree:
         return SIDE_REACHED_STOP, frame, None
 
     def _can_walk(self, target_id: int, source_id: int, time_ns: int) -> str | None:
-        """Run the walk on parents only; return None when possible, else tf2's error text."""
+        """Return None when the walk would succeed, else tf2's error text."""
         if source_id == target_id:
             return None
         plan = self._plan(target_id, source_id)
-        if plan is not None and has_data(plan, time_ns or common_time(plan)):
+        if plan is not None and has_data(plan.reads, time_ns or common_time(plan)):
             return None
-        if time_ns == 0:
-            try:
+        try:
+            if time_ns == 0:
                 time_ns = self._latest_common_time(target_id, source_id)
-            except TransformException as error:
-                return str(error)
-        outcome, top, failed_cache = self._climb(source_id, 0, target_id, time_ns)
-        if outcome == SIDE_REACHED_OTHER or top == target_id:
-            return None
-        if outcome == SIDE_LOOP:
-            return self._loop_text()
-        outcome, _, no_data = self._climb(target_id, top, source_id, time_ns)
-        if outcome == SIDE_NO_DATA and no_data is not None:
-            return no_data.explain_failure(time_ns)[1] + self._walk_suffix(source_id, target_id)
-        if outcome == SIDE_LOOP:
-            return self._loop_text()
-        if outcome == SIDE_NO_CACHE:
-            if failed_cache is not None:
-                text = failed_cache.explain_failure(time_ns)[1]
-                return text + self._walk_suffix(source_id, target_id)
-            return self._connectivity_text(source_id, target_id)
+            self._route(target_id, source_id, time_ns)
+        except TransformException as error:
+            return str(error)
         return None
 
     def _walk_chain(self, target_id: int, source_id: int, time_ns: int) -> list[int]:

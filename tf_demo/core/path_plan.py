@@ -18,9 +18,10 @@ The path between two frames, remembered until the tree changes shape.
 While every dynamic link on the way has had one parent all along, the frames tf2's walk visits
 between two frames are the same at every time: only whether each dynamic link has data at the
 asked time varies.  :func:`plan_path` works out, once per shape of the tree, which dynamic
-caches the walk reads (:attr:`PathPlan.reads`) and which ones ``getLatestCommonTime`` takes the
-newest stamps of (:attr:`PathPlan.common`), so that ``can_transform`` and a lookup at time 0
-need no walk.  Where the walk would fail, or a link has changed parent, there is no plan and the
+caches the walk reads (:attr:`PathPlan.reads`), which ones ``getLatestCommonTime`` takes the
+newest stamps of (:attr:`PathPlan.common`) and the route itself (:attr:`PathPlan.route`), its
+runs of static links folded into one transform each, so that ``can_transform`` and a lookup need
+no walk.  Where the walk would fail, or a link has changed parent, there is no plan and the
 full walk (with tf2's error texts) answers, as before.
 """
 
@@ -29,10 +30,16 @@ from __future__ import annotations
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
+from tf_demo.core.links import accumulate_links
+from tf_demo.core.links import Route
+from tf_demo.core.links import ROUTE_ACROSS
+from tf_demo.core.links import ROUTE_DOWN
+from tf_demo.core.links import ROUTE_UP
+from tf_demo.core.time_cache import StaticCache
+
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-    from tf_demo.core.time_cache import StaticCache
     from tf_demo.core.time_cache import TimeCache
 
 __all__ = ['PathPlan', 'common_time', 'has_data', 'plan_path']
@@ -45,6 +52,10 @@ class PathPlan(NamedTuple):
     reads: tuple[TimeCache, ...]
     #: The dynamic caches between the two frames and their lowest common ancestor.
     common: tuple[TimeCache, ...]
+    #: The walk's route, with each run of static links folded into one.
+    route: Route
+    #: The caches of :attr:`reads` that are not links of the route (whose data it checks).
+    off_route: tuple[TimeCache, ...]
 
 
 def _ancestors(
@@ -67,6 +78,35 @@ def _ancestors(
         frames.append(frame)
         cache = caches[frame]
     return frames
+
+
+def _folded(
+    caches: Sequence[TimeCache | StaticCache | None], frames: Sequence[int]
+) -> list[TimeCache | StaticCache]:
+    """Return the links of ``frames`` (each has a cache), each run of static ones composed."""
+    links: list[TimeCache | StaticCache] = []
+    run: list[TimeCache | StaticCache] = []
+    for frame in frames:
+        cache = caches[frame]
+        assert cache is not None  # frames a walk accumulates have caches
+        if cache.is_static:
+            run.append(cache)
+            continue
+        links += _fold(run)
+        run = []
+        links.append(cache)
+    return links + _fold(run)
+
+
+def _fold(run: list[TimeCache | StaticCache]) -> list[TimeCache | StaticCache]:
+    """Return a run of static links as one link (the run itself when it is that short)."""
+    if len(run) < 2:
+        return run
+    values = accumulate_links(run, 0)
+    assert values is not None  # static links have data at every time
+    folded = StaticCache()
+    folded.insert(0, (*values, 0))
+    return [folded]
 
 
 def _dynamic(
@@ -98,17 +138,22 @@ def plan_path(
         return None
     # The walk: the source side reads every cache up to the target or the top.
     if target in source_up:
-        reads = _dynamic(caches, source_up[: source_up.index(target) + 1])
+        up_to = source_up.index(target)
+        reads = _dynamic(caches, source_up[: up_to + 1])
+        route: Route = (ROUTE_UP, _folded(caches, source_up[:up_to]), ())
     else:
         top = source_up[-1]
         reads = _dynamic(caches, source_up)
-        if target != top:
-            if top not in target_up:
-                return None  # two trees
-            side = target_up[: target_up.index(top)]
-            if source in side:
-                side = side[: side.index(source) + 1]
+        if top not in target_up:
+            return None  # two trees
+        side = target_up[: target_up.index(top)]
+        if source in side:
+            below = side.index(source)
+            reads += _dynamic(caches, side[: below + 1])
+            route = (ROUTE_DOWN, (), _folded(caches, side[:below]))
+        else:
             reads += _dynamic(caches, side)
+            route = (ROUTE_ACROSS, _folded(caches, source_up[:-1]), _folded(caches, side))
     # getLatestCommonTime: the links below the lowest common ancestor, on both sides.
     if target in source_up:
         common = _dynamic(caches, source_up[: source_up.index(target)])
@@ -119,7 +164,9 @@ def plan_path(
         common = _dynamic(caches, target_up[:meet])
         if ancestor != source:
             common += _dynamic(caches, source_up[: source_up.index(ancestor)])
-    return PathPlan(tuple(reads), tuple(common))
+    on_route = {id(cache) for cache in (*route[1], *route[2])}
+    off_route = tuple(cache for cache in reads if id(cache) not in on_route)
+    return PathPlan(tuple(reads), tuple(common), route, off_route)
 
 
 def common_time(plan: PathPlan) -> int:
@@ -128,10 +175,10 @@ def common_time(plan: PathPlan) -> int:
     return min(newest) if newest else 0
 
 
-def has_data(plan: PathPlan, time_ns: int) -> bool:
-    """Return whether every dynamic link the walk reads has data at ``time_ns`` (0: newest)."""
+def has_data(caches: tuple[TimeCache, ...], time_ns: int) -> bool:
+    """Return whether every one of ``caches`` has data at ``time_ns`` (0: the newest)."""
     if time_ns:
-        for cache in plan.reads:
+        for cache in caches:
             stamps = cache._stamps
             if not stamps[cache._start] <= time_ns <= stamps[-1]:
                 return False
