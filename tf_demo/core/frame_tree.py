@@ -69,6 +69,8 @@ __all__ = [
 ]
 
 MAX_GRAPH_DEPTH = 1000
+#: ``_plans.get``'s answer for a pair not planned yet (None means: no plan to make).
+_UNPLANNED: PathPlan | None = PathPlan((), (), (0, (), ()), ())
 #: Plans remembered at most (all are dropped beyond: a client asking ever new pairs).
 _MAX_PLANS = 4096
 NO_PARENT = 'NO_PARENT'
@@ -301,14 +303,20 @@ class FrameTree:
         """
         if source_id == target_id:
             return _IDENTITY_T, _IDENTITY_Q, time_ns
-        plan = self._plan(target_id, source_id)
+        plan = (
+            self._plans.get((target_id, source_id), _UNPLANNED)
+            if self._plans_version == self._shape_version
+            else _UNPLANNED
+        )
+        if plan is _UNPLANNED:
+            plan = self._plan(target_id, source_id)
         if time_ns == 0:
             if plan is not None:
                 time_ns = common_time(plan)
             else:
                 time_ns = self._latest_common_time(target_id, source_id)
         composed = None
-        if plan is not None and has_data(plan.off_route, time_ns):
+        if plan is not None and (not plan.off_route or has_data(plan.off_route, time_ns)):
             composed = compose_route(plan.route, time_ns)
         if composed is None:
             composed = compose_route(self._route(target_id, source_id, time_ns), time_ns)

@@ -171,8 +171,12 @@ def plan_path(
 
 def common_time(plan: PathPlan) -> int:
     """Return tf2's latest common time of the planned frames (0: no link constrains it)."""
-    newest = [stamp for stamp in (cache.latest[0] for cache in plan.common) if stamp]
-    return min(newest) if newest else 0
+    oldest_newest = 0
+    for cache in plan.common:
+        stamp = cache.latest[0]
+        if stamp and (stamp < oldest_newest or not oldest_newest):
+            oldest_newest = stamp
+    return oldest_newest
 
 
 def has_data(caches: tuple[TimeCache, ...], time_ns: int) -> bool:
