@@ -12,7 +12,7 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""new_transform_stamped in the rclpy world: rclpy's own message, slot for slot, byte for byte."""
+"""new_transform_stamped and transform_stamped_args in the rclpy world: rclpy's own slots."""
 
 from __future__ import annotations
 
@@ -96,3 +96,29 @@ def test_with_field_checks_on_the_message_checks_later_assignments() -> None:
     )
     assert result.returncode == 0, result.stderr
     assert "refused: The 'x' field must be of type 'float'" in result.stdout
+
+
+@pytest.mark.parametrize('case', CASES, ids=range(len(CASES)))
+def test_reading_through_the_slots_gives_what_the_properties_give(case: Case) -> None:
+    from tf_demo.msgs import convert
+    from tf_demo.transport.messages import transform_stamped_args
+
+    message = _reference(*case)
+    assert transform_stamped_args(message) == convert.transform_stamped_args(message)
+    parent, child, stamp_ns, translation, rotation = transform_stamped_args(message)
+    assert (parent, child, stamp_ns) == case[:3]
+    assert translation == tuple(float(v) for v in case[3])
+    assert rotation == tuple(float(v) for v in case[4])
+
+
+def test_a_foreign_object_in_a_field_is_read_through_its_attributes() -> None:
+    """With field checks off rclpy accepts any object in a field: the slots then do not apply."""
+    from types import SimpleNamespace
+
+    from tf_demo.transport.messages import transform_stamped_args
+
+    message = _reference(*CASES[0])
+    message.transform.translation = SimpleNamespace(x=7.0, y=8.0, z=9.0)
+    assert transform_stamped_args(message)[3] == (7.0, 8.0, 9.0)
+    plain = SimpleNamespace(header=message.header, child_frame_id='c', transform=message.transform)
+    assert transform_stamped_args(plain)[:2] == ('map', 'c')

@@ -372,10 +372,11 @@ def canonical_quat(q: Sequence[float]) -> Quat:
     Return ``q`` as tf2 stores it on insert: normalised and sign-canonicalised.
 
     tf2 converts the message quaternion to a matrix (dividing by ``|q|^2``) and back.  The
-    sign follows that matrix's diagonal, computed with the same arithmetic; when its trace is
-    positive (``w`` dominates) the result is ``q / |q|`` with ``w > 0``, equal to the matrix
-    route to about 1e-16; otherwise it is :func:`quat_from_matrix` of :func:`matrix_from_quat`.
-    Zero, infinite or NaN input yields NaN components.  ``q`` may be any sequence of 4 numbers.
+    result is ``q / |q|`` with the sign that makes positive the component tf2 solves for first
+    (``w`` when the matrix's trace is positive, else that of the largest diagonal element; the
+    diagonal computed with tf2's arithmetic): equal to the matrix route to about 1e-16 (pinned
+    by ``test/core/test_math3d_inlined.py``) without building the matrix.  Zero, infinite or
+    NaN input yields NaN components.  ``q`` may be any sequence of 4 numbers.
     """
     x, y, z, w = q
     d = x * x + y * y + z * z + w * w
@@ -385,12 +386,19 @@ def canonical_quat(q: Sequence[float]) -> Quat:
     xx = x * (x * s)
     yy = y * (y * s)
     zz = z * (z * s)
-    if (1.0 - (yy + zz)) + (1.0 - (xx + zz)) + (1.0 - (xx + yy)) > 0.0:
-        inverse = 1.0 / _sqrt(d)
-        if w < 0.0:
-            inverse = -inverse
-        return (x * inverse, y * inverse, z * inverse, w * inverse)
-    return quat_from_matrix(matrix_from_quat((x, y, z, w)))
+    m00 = 1.0 - (yy + zz)
+    m11 = 1.0 - (xx + zz)
+    m22 = 1.0 - (xx + yy)
+    if m00 + m11 + m22 > 0.0:
+        pivot = w
+    elif m00 < m11:
+        pivot = z if m11 < m22 else y
+    else:
+        pivot = z if m00 < m22 else x
+    inverse = 1.0 / _sqrt(d)
+    if pivot < 0.0:
+        inverse = -inverse
+    return (x * inverse, y * inverse, z * inverse, w * inverse)
 
 
 def homogeneous_from_transform(t: Vec3, q: Quat) -> npt.NDArray[np.float64]:

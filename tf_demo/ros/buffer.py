@@ -76,7 +76,6 @@ from tf_demo.core.buffer_core import BufferCore
 from tf_demo.core.exceptions import TimeoutException
 from tf_demo.core.exceptions import TransformException
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
-from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.msgs.log_throttle import PerWriterThrottle
 from tf_demo.msgs.log_throttle import Writer
 from tf_demo.ros.buffer_waits import BufferWaits
@@ -91,6 +90,7 @@ from tf_demo.transport.future import Future
 from tf_demo.transport.logging import get_logger
 from tf_demo.transport.messages import new_transform_stamped
 from tf_demo.transport.messages import service_module
+from tf_demo.transport.messages import transform_stamped_args
 
 if TYPE_CHECKING:
     from tf_demo.core.math3d import Vec3

@@ -18,7 +18,7 @@ The message modules of the selected world, so node code is written once.
 ``geometry_msgs.TransformStamped()`` is ``geometry_msgs.msg.TransformStamped`` under rclpy and
 ``tf_demo.msgs.geometry_msgs.TransformStamped`` in the standalone world.
 :func:`new_transform_stamped` makes a filled one the fastest way each world allows (the
-buffer's lookups answer with it).
+buffer's lookups answer with it), :func:`transform_stamped_args` reads one so (its inserts).
 """
 
 from __future__ import annotations
@@ -41,6 +41,7 @@ __all__ = [
     'service_module',
     'std_msgs',
     'tf2_msgs',
+    'transform_stamped_args',
 ]
 
 
@@ -68,6 +69,7 @@ if TYPE_CHECKING or not rclpy_world():
     from tf_demo.msgs import std_msgs
     from tf_demo.msgs import tf2_msgs
     from tf_demo.msgs.convert import fill_transform_stamped
+    from tf_demo.msgs.convert import transform_stamped_args
 
     def new_transform_stamped(
         target: str, source: str, result: TransformResult
@@ -91,3 +93,4 @@ else:  # pragma: no cover - needs a ROS 2 installation
     std_msgs = message_module('std_msgs')
     tf2_msgs = message_module('tf2_msgs')
     from tf_demo.transport.rclpy_builders import new_transform_stamped
+    from tf_demo.transport.rclpy_builders import transform_stamped_args

@@ -13,7 +13,7 @@
 # limitations under the License.
 
 """
-The rclpy world's fast ``geometry_msgs/TransformStamped``: rclpy's own class, built directly.
+The rclpy world's fast ``geometry_msgs/TransformStamped``: rclpy's own class, built and read.
 
 A lookup answers with a TransformStamped of seven nested rclpy messages. Their generated
 constructors build every default and then go through a property setter per field, which costs
@@ -24,6 +24,7 @@ would give it (``ROS_PYTHON_CHECK_FIELDS`` as its module read it at import), so 
 indistinguishable from ``TransformStamped(...)`` filled field by field; a test in the rclpy world
 compares them slot by slot. The values are what the setters would accept anyway (floats, str,
 ``sec``/``nanosec`` split and range-checked by :func:`~tf_demo.msgs.convert.stamp_fields_from_ns`).
+:func:`transform_stamped_args` reads one through the same slots, for ``Buffer.set_transform``.
 """
 
 from __future__ import annotations
@@ -39,7 +40,12 @@ from geometry_msgs.msg import TransformStamped
 from geometry_msgs.msg import Vector3
 from std_msgs.msg import Header
 from tf_demo.core.buffer_core import TransformResult
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
+from tf_demo.msgs import convert
+from tf_demo.msgs.convert import NS_PER_S
 from tf_demo.msgs.convert import stamp_fields_from_ns
+from tf_demo.msgs.convert import TransformStampedLike
 
 
 class _GeneratedMessage(Protocol):
@@ -91,3 +97,30 @@ def new_transform_stamped(target: str, source: str, result: TransformResult) -> 
     message = _blank(TransformStamped, _CHECK_STAMPED)
     message._header, message._child_frame_id, message._transform = header, str(source), transform
     return message
+
+
+def transform_stamped_args(msg: TransformStampedLike) -> tuple[str, str, int, Vec3, Quat]:
+    """
+    Return ``(parent, child, stamp_ns, translation, rotation)`` of a TransformStamped.
+
+    rclpy's own message is read through its slots (no property call per field); anything else,
+    or one holding foreign objects in its fields, as
+    :func:`tf_demo.msgs.convert.transform_stamped_args` reads it.
+    """
+    if isinstance(msg, TransformStamped):
+        try:
+            header = msg._header
+            stamp = header._stamp
+            transform = msg._transform
+            t = transform._translation
+            r = transform._rotation
+            return (
+                header._frame_id,
+                msg._child_frame_id,
+                int(stamp._sec) * NS_PER_S + int(stamp._nanosec),
+                (t._x, t._y, t._z),
+                (r._x, r._y, r._z, r._w),
+            )
+        except AttributeError:
+            pass
+    return convert.transform_stamped_args(msg)
