@@ -33,35 +33,6 @@ from tf_demo.transport.dds.qos import qos_profile_rosout_default
 pytestmark = [pytest.mark.standalone, pytest.mark.dds]
 
 
-#: Jazzy's hashes, from /opt/ros/jazzy/share/<pkg>/srv/*.json (rosidl_generator_type_description).
-JAZZY_HASHES = {
-    'rcl_interfaces/srv/GetParameters': (
-        'RIHS01_bf9803d5c74cf989a5de3e0c2e99444599a627c7ff75f97b8c05b01003675cbc'
-    ),
-    'rcl_interfaces/srv/GetParameters_Request': (
-        'RIHS01_135a9e1c3d7cebef792f6687d7ddf99949b21a0bd9a320d863a9110a3f5cf4d6'
-    ),
-    'rcl_interfaces/srv/GetParameters_Response': (
-        'RIHS01_9fa773b46e39cc5d02db6224d8fd520bb9caeeffc2b27c96c1e59431baba9f2a'
-    ),
-    'rcl_interfaces/srv/DescribeParameters': (
-        'RIHS01_845b484d71eb0673dae682f2e3ba3c4851a65a3dcfb97bddd82c5b57e91e4cff'
-    ),
-    'rcl_interfaces/srv/GetParameterTypes': (
-        'RIHS01_da199c878688b3e530bdfe3ca8f74cb9fa0c303101e980a9e8f260e25e1c80ca'
-    ),
-    'rcl_interfaces/msg/ParameterDescriptor': (
-        'RIHS01_52175dbfda6c51153101d33d2a9da05743f66f02d5ab2ca9ec4709b46b73d704'
-    ),
-    'rcl_interfaces/msg/ParameterValue': (
-        'RIHS01_115fc089a387e23c7ecd3525c9189c379109119d6ab82e8dfbde0fdf6a7f9b68'
-    ),
-    'service_msgs/msg/ServiceEventInfo': (
-        'RIHS01_41bcbbe07a75c9b52bc96bfd5c24d7f0fc0a08c0cb7921b3373c5732345a6f45'
-    ),
-}
-
-
 def test_rosout_carries_node_and_child_logger_lines(dds_world: None) -> None:
     """Log lines of a node's logger and its children go to /rosout with rcl's fields."""
     node = dds_backend.DdsNode('talker_node', start_parameter_services=False)
