@@ -513,3 +513,11 @@ def executors(ros: None) -> Iterator[list[Any]]:
     yield made
     for executor in made:
         executor.shutdown()
+
+
+def executor_with(executors: list[Any], executor: Any, *nodes: Any) -> Any:
+    """Return ``executor`` with ``nodes`` added, shut down at the test's end (``executors``)."""
+    executors.append(executor)
+    for node in nodes:
+        executor.add_node(node)
+    return executor

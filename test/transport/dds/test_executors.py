@@ -24,6 +24,7 @@ from __future__ import annotations
 import time
 from typing import Any
 
+from conftest import executor_with
 from conftest import HAVE_CYCLONEDDS
 import pytest
 from tf_demo import transport
@@ -43,11 +44,7 @@ DEADLINE_S = 30.0
 
 
 def single_threaded(executors: list[Any], *nodes: Any) -> Any:
-    executor = SingleThreadedExecutor()
-    executors.append(executor)
-    for node in nodes:
-        executor.add_node(node)
-    return executor
+    return executor_with(executors, SingleThreadedExecutor(), *nodes)
 
 
 def test_single_threaded_timer_blocking_past_its_period_does_not_starve_a_subscription(

@@ -29,6 +29,7 @@ import threading
 import time
 from typing import Any
 
+from conftest import executor_with
 import pytest
 from tf_demo import transport
 from tf_demo.core.exceptions import TransformException
@@ -60,11 +61,7 @@ def spin_until(executor: Any, done: Callable[[], bool], timeout_s: float = DEADL
 
 
 def multi_threaded(executors: list[Any], *nodes: Any, num_threads: int = 2) -> Any:
-    executor = MultiThreadedExecutor(num_threads=num_threads)
-    executors.append(executor)
-    for node in nodes:
-        executor.add_node(node)
-    return executor
+    return executor_with(executors, MultiThreadedExecutor(num_threads=num_threads), *nodes)
 
 
 def test_multi_threaded_reentrant_group_runs_two_callbacks_at_once(
