@@ -30,7 +30,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-import numpy as np
+from tf_demo.core.lazy_import import lazy_module
 from tf_demo.core.math3d import quat_multiply
 from tf_demo.core.math3d import quat_multiply_batch
 from tf_demo.core.math3d import rotate_vector
@@ -40,6 +40,7 @@ from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
 if TYPE_CHECKING:
+    import numpy as np
     import numpy.typing as npt
 
     FloatArray = npt.NDArray[np.float64]
@@ -49,6 +50,8 @@ if TYPE_CHECKING:
     Value = float | FloatArray
     #: A transform as seven values: tx, ty, tz, qx, qy, qz, qw.
     Link = tuple[Value, Value, Value, Value, Value, Value, Value]
+else:
+    np = lazy_module('numpy')
 
 __all__ = ['batch_walk', 'batch_walk_uniform', 'sample_batch']
 
@@ -57,7 +60,6 @@ _ENDING_NONE = 0
 _ENDING_TARGET_PARENT = 1
 _ENDING_SOURCE_PARENT = 2
 _ENDING_FULL = 3
-_IDENTITY_ROW = np.array([[0.0, 0.0, 0.0, 1.0]])
 #: Largest slerp angle for which :func:`_interpolate_rows` derives the cosine from the sine.
 _SQRT_COSINE_MAX_THETA = 1.0
 #: Most lanes per pass of :func:`batch_walk_uniform` (passes are balanced).
@@ -476,7 +478,7 @@ def batch_walk(
         full.all()
         and tgt_t.shape[0] == 1
         and not tgt_t.any()
-        and np.array_equal(tgt_q, _IDENTITY_ROW)
+        and tgt_q.tolist() == [[0.0, 0.0, 0.0, 1.0]]
     ):
         # Every lane met the target as the top: the inverse of an identity changes nothing.
         return _full(src_t, count), _full(src_q, count), failed

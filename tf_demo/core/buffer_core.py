@@ -41,7 +41,6 @@ import threading
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
-import numpy as np
 from tf_demo.core import math3d
 from tf_demo.core._batch import batch_walk
 from tf_demo.core._batch import batch_walk_uniform
@@ -52,6 +51,7 @@ from tf_demo.core.frames_format import all_frames_as_dot
 from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import all_frames_as_yaml
 from tf_demo.core.frames_format import FrameInfo
+from tf_demo.core.lazy_import import lazy_module
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
 from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import duration_to_sec
@@ -59,9 +59,12 @@ from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
 if TYPE_CHECKING:
+    import numpy as np
     import numpy.typing as npt
     from tf_demo.core.math3d import Quat
     from tf_demo.core.math3d import Vec3
+else:
+    np = lazy_module('numpy')
 
 __all__ = [
     'MAX_GRAPH_DEPTH',

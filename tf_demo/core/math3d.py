@@ -39,13 +39,16 @@ import math
 from typing import TYPE_CHECKING
 from typing import TypeVar
 
-import numpy as np
+from tf_demo.core.lazy_import import lazy_module
 
 if TYPE_CHECKING:
+    import numpy as np
     import numpy.typing as npt
 
     #: One component for many lanes at once (an array), or the same float for every lane.
     Lane = float | npt.NDArray[np.float64]
+else:
+    np = lazy_module('numpy')
 
 #: The component type of :func:`quat_multiply` and :func:`rotate_vector`: floats in, floats out;
 #: lanes in, lanes out.

@@ -44,12 +44,15 @@ from typing import Literal
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
-import numpy as np
+from tf_demo.core.lazy_import import lazy_module
 from tf_demo.core.math3d import lerp
 from tf_demo.core.math3d import slerp
 
 if TYPE_CHECKING:
+    import numpy as np
     import numpy.typing as npt
+else:
+    np = lazy_module('numpy')
 
 __all__ = [
     'DEFAULT_CACHE_TIME_NS',

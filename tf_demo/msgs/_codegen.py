@@ -37,8 +37,9 @@ import sys
 from types import FunctionType
 from typing import Any
 from typing import Literal
+from typing import TYPE_CHECKING
 
-import numpy
+from tf_demo.core.lazy_import import lazy_module
 from tf_demo.msgs._message import blank_instance_maker
 from tf_demo.msgs._message import Message
 from tf_demo.msgs._message import message_class
@@ -46,6 +47,11 @@ from tf_demo.msgs._schema import FieldSpec
 from tf_demo.msgs._schema import MessageSpec
 from tf_demo.msgs._schema import PRIMITIVES
 from tf_demo.msgs._schema import spec_for
+
+if TYPE_CHECKING:
+    import numpy
+else:
+    numpy = lazy_module('numpy')
 
 _MAX_ALIGN = 8
 #: Zero padding of 0..7 bytes, indexed by the pad length.

@@ -27,14 +27,20 @@ from collections.abc import Iterable
 import math
 import struct
 from typing import cast
+from typing import TYPE_CHECKING
 
-import numpy
+from tf_demo.core.lazy_import import lazy_module
 from tf_demo.msgs._message import Message
 from tf_demo.msgs._message import message_class
 from tf_demo.msgs._schema import FieldSpec
 from tf_demo.msgs._schema import MessageSpec
 from tf_demo.msgs._schema import PRIMITIVES
 from tf_demo.msgs._schema import spec_for
+
+if TYPE_CHECKING:
+    import numpy
+else:
+    numpy = lazy_module('numpy')
 
 _HEADER_SIZE = 4
 _INT_RANGES = {

@@ -87,7 +87,14 @@ class _Module:
             ('tf_demo.msgs._message', 'blank_instance_maker'),
         }
         self.typing_imports: set[tuple[str, str]] = set()
+        self.lazy_numpy = False
         self.names: dict[str, str] = {}  # class name -> msgtype, to refuse a clash
+
+    def need_numpy(self) -> None:
+        """Use numpy, imported on first use (:mod:`tf_demo.core.lazy_import`)."""
+        self.imports.add(('tf_demo.core.lazy_import', 'lazy_module'))
+        self.typing_imports.add(('numpy', ''))
+        self.lazy_numpy = True
 
     def need(self, module: str, name: str) -> None:
         """Import ``name`` from ``module`` (``name`` '' for ``import module``)."""
@@ -118,7 +125,7 @@ class _Module:
             return f'Sequence[{element}]'  # an array.array by default, as rclpy's
         if field.kind == 'array' and prim is not None and prim.numpy_dtype:
             self.need('collections.abc', 'Sequence')
-            self.need('numpy', '')
+            self.need_numpy()
             self.typing_imports.add(('numpy.typing', 'NDArray'))
             return f'NDArray[numpy.{prim.numpy_dtype}] | Sequence[{element}]'
         return element if field.kind == 'single' else f'list[{element}]'
@@ -138,7 +145,7 @@ class _Module:
                 return f'array({prim.array_code!r})', True
             return '[]', True
         if prim is not None and prim.numpy_dtype:
-            self.need('numpy', '')
+            self.need_numpy()
             return f'numpy.zeros({field.size}, dtype=numpy.{prim.numpy_dtype})', True
         if field.is_nested:
             return f'[{self.class_name(field.base)}() for _ in range({field.size})]', True
@@ -298,6 +305,8 @@ def _imports(module: _Module) -> list[str]:
     lines += ['', *_import_lines(third_party)]
     if module.typing_imports:
         lines += ['', 'if TYPE_CHECKING:', *_import_lines(module.typing_imports, _INDENT)]
+        if module.lazy_numpy:
+            lines += ['else:', f"{_INDENT}numpy = lazy_module('numpy')"]
     return lines
 
 

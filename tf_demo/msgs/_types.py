@@ -25,14 +25,17 @@ from typing import Final
 from typing import NoReturn
 from typing import TYPE_CHECKING
 
-import numpy
+from tf_demo.core.lazy_import import lazy_module
 from tf_demo.msgs._message import blank_instance_maker
 from tf_demo.msgs._message import Message
 from tf_demo.msgs._message import sequences_equal
 from tf_demo.msgs._message import Service
 
 if TYPE_CHECKING:
+    import numpy
     from numpy.typing import NDArray
+else:
+    numpy = lazy_module('numpy')
 
 
 class Time(Message):

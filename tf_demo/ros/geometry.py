@@ -42,10 +42,11 @@ from typing import Protocol
 from typing import TYPE_CHECKING
 from typing import TypeVar
 
-import numpy as np
-import numpy.typing as npt
+from tf_demo.core.lazy_import import lazy_module
 
 if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
     from tf_demo.msgs.convert import HeaderLike
     from tf_demo.msgs.convert import QuaternionLike
     from tf_demo.msgs.convert import TransformStampedLike
@@ -57,7 +58,10 @@ if TYPE_CHECKING:
     from tf_demo.msgs.geometry_msgs import PoseWithCovarianceStamped
     from tf_demo.msgs.geometry_msgs import Vector3Stamped
 
-FloatArray = npt.NDArray[np.float64]
+    FloatArray = npt.NDArray[np.float64]
+else:
+    np = lazy_module('numpy')
+
 #: ``do_transform_*(msg, transform)``: the table holds one per message type, so ``msg`` (and the
 #: result, of the same type) can only be typed per function.
 TransformFunction = Callable[[Any, 'TransformStampedLike'], Any]
