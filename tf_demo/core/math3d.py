@@ -372,36 +372,44 @@ def quat_from_matrix(m: Matrix3) -> Quat:
 
 def canonical_quat(q: Sequence[float]) -> Quat:
     """
-    Return ``q`` as tf2 stores it on insert: normalised and sign-canonicalised.
+    Return ``q`` as tf2 stores it: normalised and sign-canonicalised, bit for bit.
 
-    tf2 converts the message quaternion to a matrix (dividing by ``|q|^2``) and back.  The
-    result is ``q / |q|`` with the sign that makes positive the component tf2 solves for first
-    (``w`` when the matrix's trace is positive, else that of the largest diagonal element; the
-    diagonal computed with tf2's arithmetic): equal to the matrix route to about 1e-16 (pinned
-    by ``test/core/test_math3d_inlined.py``) without building the matrix.  Zero, infinite or
-    NaN input yields NaN components.  ``q`` may be any sequence of 4 numbers.
+    tf2 converts the message quaternion to a matrix (dividing by ``|q|^2``) and back
+    (``Matrix3x3::setRotation`` then ``getRotation``).  When the matrix's trace is positive
+    (rotations under 120 degrees, the common case) only the entries that ``getRotation`` reads
+    are computed, with tf2's arithmetic; otherwise the full round trip runs.  The result equals
+    :func:`quat_from_matrix` of :func:`matrix_from_quat` exactly, so printed values near zero
+    keep tf2's sign.  Zero, infinite or NaN input yields NaN components.  ``q`` may be any
+    sequence of 4 numbers.
     """
     x, y, z, w = q
     d = x * x + y * y + z * z + w * w
     if not d:
         return (math.nan, math.nan, math.nan, math.nan)
     s = 2.0 / d
-    xx = x * (x * s)
-    yy = y * (y * s)
-    zz = z * (z * s)
-    m00 = 1.0 - (yy + zz)
-    m11 = 1.0 - (xx + zz)
-    m22 = 1.0 - (xx + yy)
-    if m00 + m11 + m22 > 0.0:
-        pivot = w
-    elif m00 < m11:
-        pivot = z if m11 < m22 else y
-    else:
-        pivot = z if m00 < m22 else x
-    inverse = 1.0 / _sqrt(d)
-    if pivot < 0.0:
-        inverse = -inverse
-    return (x * inverse, y * inverse, z * inverse, w * inverse)
+    xs = x * s
+    ys = y * s
+    zs = z * s
+    xx = x * xs
+    yy = y * ys
+    zz = z * zs
+    trace = (1.0 - (yy + zz)) + (1.0 - (xx + zz)) + (1.0 - (xx + yy))
+    if trace > 0.0:
+        wx = w * xs
+        wy = w * ys
+        wz = w * zs
+        xy = x * ys
+        xz = x * zs
+        yz = y * zs
+        root = _sqrt(trace + 1.0)
+        half_inverse = 0.5 / root
+        return (
+            ((yz + wx) - (yz - wx)) * half_inverse,
+            ((xz + wy) - (xz - wy)) * half_inverse,
+            ((xy + wz) - (xy - wz)) * half_inverse,
+            root * 0.5,
+        )
+    return quat_from_matrix(matrix_from_quat((x, y, z, w)))
 
 
 def homogeneous_from_transform(t: Vec3, q: Quat) -> npt.NDArray[np.float64]:
@@ -548,34 +556,30 @@ def canonical_quat_batch(
     q: npt.NDArray[np.float64], out: npt.NDArray[np.float64] | None = None
 ) -> npt.NDArray[np.float64]:
     """
-    Row-wise :func:`canonical_quat`, without building the matrices.
-
-    The sign is chosen with the same matrix diagonal (same arithmetic) as tf2's
-    ``getRotation``; the magnitude is ``q / |q|``, which equals the matrix route to about
-    1e-16.
+    Row-wise :func:`canonical_quat`, bit for bit, with the same arithmetic.
 
     :param out: ``(N, 4)`` array to write into (may be ``q`` itself); a new C-contiguous one
         by default.
     """
     x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    d = x * x + y * y + z * z + w * w
     with np.errstate(divide='ignore', invalid='ignore'):
-        s = 2.0 / d
-        xx = x * (x * s)
-        yy = y * (y * s)
-        zz = z * (z * s)
-        m00 = 1.0 - (yy + zz)
-        m11 = 1.0 - (xx + zz)
-        m22 = 1.0 - (xx + yy)
-        positive = (m00 + m11 + m22) > 0.0
-        if positive.all():
-            pivot = w  # the common case: tf2 makes w positive
-        else:
-            largest = np.where(m00 < m11, np.where(m11 < m22, 2, 1), np.where(m00 < m22, 2, 0))
-            pivot = np.where(positive, w, np.choose(largest, (x, y, z)))
-        scale = np.where(pivot < 0.0, -1.0, 1.0)
-        scale /= np.sqrt(d)
+        s = 2.0 / (x * x + y * y + z * z + w * w)
+        xs, ys, zs = x * s, y * s, z * s
+        xx, yy, zz = x * xs, y * ys, z * zs
+        trace = (1.0 - (yy + zz)) + (1.0 - (xx + zz)) + (1.0 - (xx + yy))
+        wx, wy, wz = w * xs, w * ys, w * zs
+        xy, xz, yz = x * ys, x * zs, y * zs
+        root = np.sqrt(trace + 1.0)
+        half_inverse = 0.5 / root
+        result = np.empty((q.shape[0], 4))
+        result[:, 0] = ((yz + wx) - (yz - wx)) * half_inverse
+        result[:, 1] = ((xz + wy) - (xz - wy)) * half_inverse
+        result[:, 2] = ((xy + wz) - (xy - wz)) * half_inverse
+        result[:, 3] = root * 0.5
+    rows = np.flatnonzero(~(trace > 0.0))
+    if rows.size:
+        result[rows] = quat_from_matrix_batch(matrix_from_quat_batch(q[rows]))
     if out is None:
-        out = np.empty((q.shape[0], 4))
-    np.multiply(q, scale[:, None], out=out)
+        return result
+    out[...] = result
     return out
