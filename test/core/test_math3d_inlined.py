@@ -19,8 +19,8 @@ math3d is the one source of the rotation math.  The lookup walk
 (``links.accumulate_links``) and the vectorised walk (``_batch`` with the interval
 constants of ``TimeCache.arrays``) inline lerp, slerp and composition for speed, and math3d
 itself has a fast route (``canonical_quat`` computes only the matrix entries tf2 reads back,
-pinned bit for bit) and vectorised copies (``*_batch``); each test below names the copy it pins and compares it with the scalar original on drawn inputs
-(quaternions up to sign where the copy may flip it).  Where a test builds the newer rotation
+pinned bit for bit) and vectorised copies (``*_batch``); each test below names the copy it
+pins and compares it with the scalar original on drawn inputs (quaternions up to sign where the copy may flip it).  Where a test builds the newer rotation
 from the older one, the angle between them is exactly 0 or at least 1e-6 rad: below about
 1e-7 rad math3d's slerp (tf2's, which divides the dot product by the norms) may find a cosine
 of exactly 1 and return the older rotation while the walk (which skips that division) still
@@ -367,7 +367,8 @@ def test_batch_rotation_helpers_are_the_scalar_ones(rows: list[Quat]) -> None:
     unit_matrices = math3d.matrix_from_quat_batch(canonical)
     back = math3d.quat_from_matrix_batch(unit_matrices)
     for index, q in enumerate(rows):
-        _assert_identical(tuple(canonical[index]), math3d.canonical_quat(q), 'canonical_quat_batch')
+        scalar = math3d.canonical_quat(q)
+        _assert_identical(tuple(canonical[index]), scalar, 'canonical_quat_batch')
         matrix = math3d.matrix_from_quat(q)
         _assert_close(tuple(matrices[index].ravel()), sum(matrix, ()), 'matrix_from_quat_batch')
         unit = math3d.matrix_from_quat(math3d.canonical_quat(q))
