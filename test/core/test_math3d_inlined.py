@@ -15,16 +15,16 @@
 """
 The hot paths' inlined rotation math, pinned to :mod:`tf_demo.core.math3d` within 1e-12.
 
-math3d is the one source of the rotation math.  The lookup walk
-(``links.accumulate_links``) and the vectorised walk (``_batch`` with the interval
-constants of ``TimeCache.arrays``) inline lerp, slerp and composition for speed, and math3d
-itself has a fast route (``canonical_quat`` computes only the matrix entries tf2 reads back,
-pinned bit for bit) and vectorised copies (``*_batch``); each test below names the copy it
-pins and compares it with the scalar original on drawn inputs (quaternions up to sign where
-the copy may flip it).  Where a test builds the newer rotation from the older one, the angle between them is exactly 0 or at least 1e-6 rad: below about
-1e-7 rad math3d's slerp (tf2's, which divides the dot product by the norms) may find a cosine
-of exactly 1 and return the older rotation while the walk (which skips that division) still
-interpolates, and the two then differ by up to about the angle itself (7e-9 measured at
+math3d is the one source of the rotation math. The lookup walk (``links.accumulate_links``) and
+the vectorised walk (``_batch`` with the interval constants of ``TimeCache.arrays``) inline
+lerp, slerp and composition for speed, and math3d itself has a fast route (``canonical_quat``
+computes only the matrix entries tf2 reads back, pinned bit for bit) and vectorised copies
+(``*_batch``); each test below names the copy it pins and compares it with the scalar original
+on drawn inputs (quaternions up to sign where the copy may flip it). Where a test builds the
+newer rotation from the older one, the angle between them is exactly 0 or at least 1e-6 rad:
+below about 1e-7 rad math3d's slerp (tf2's, which divides the dot product by the norms) may find
+a cosine of exactly 1 and return the older rotation while the walk (which skips that division)
+still interpolates, and the two then differ by up to about the angle itself (7e-9 measured at
 1e-7 rad).
 """
 
