@@ -387,20 +387,12 @@ def canonical_quat(q: Sequence[float]) -> Quat:
     if not d:
         return (math.nan, math.nan, math.nan, math.nan)
     s = 2.0 / d
-    xs = x * s
-    ys = y * s
-    zs = z * s
-    xx = x * xs
-    yy = y * ys
-    zz = z * zs
+    xs, ys, zs = x * s, y * s, z * s
+    xx, yy, zz = x * xs, y * ys, z * zs
     trace = (1.0 - (yy + zz)) + (1.0 - (xx + zz)) + (1.0 - (xx + yy))
     if trace > 0.0:
-        wx = w * xs
-        wy = w * ys
-        wz = w * zs
-        xy = x * ys
-        xz = x * zs
-        yz = y * zs
+        wx, wy, wz = w * xs, w * ys, w * zs
+        xy, xz, yz = x * ys, x * zs, y * zs
         root = _sqrt(trace + 1.0)
         half_inverse = 0.5 / root
         return (
