@@ -26,6 +26,7 @@ TOOLS = [
     'tf_saver',
     'tf_loader',
     'tf_demo_live',
+    'tf_view',
 ]
 # Upstream's names for the same tools (tf2_ros' tf2_echo and tf2_monitor).
 ALIASES = {'tf2_echo': 'tf_echo', 'tf2_monitor': 'tf_monitor'}
@@ -53,6 +54,8 @@ setup(
     ],
     extras_require={
         'dds': ['cyclonedds==11.0.1'],
+        # tf_view's live 3D view in the browser.
+        'view': ['viser>=1.0'],
         'test': [
             'cyclonedds==11.0.1',
             'pytest>=7',
@@ -62,6 +65,9 @@ setup(
             'ruff==0.17.5',
             'mypy>=1.10',
             'types-PyYAML',
+            # tf_view's browser tests (with Debian's chromium and chromium-driver)
+            'selenium>=4.10',
+            'pillow',
         ],
     },
     zip_safe=True,

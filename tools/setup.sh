@@ -35,6 +35,8 @@ if [ "$job" = test ]; then
   # Oracles and peers for the tests: tf2's C++ core (python3-tf2, run by /usr/bin/python3) and
   # Cyclone DDS 0.10 (C library and idlc) for the foreign-peer interop test.
   apt_packages+=(python3-tf2 cyclonedds-dev cyclonedds-tools)
+  # A real browser for tf_view's tests: Debian's chromium, driven through its chromedriver.
+  apt_packages+=(chromium chromium-driver)
   if [ -f "$jazzy_setup" ]; then
     # The rosdep keys of package.xml's exec_depend and test_depend, as a ROS user installs them.
     apt_packages+=(python3-numpy python3-yaml python3-lxml python3-pytest python3-hypothesis)
@@ -57,9 +59,9 @@ if [ ! -x "$venv/bin/python" ]; then
   echo "== python3 -m venv .venv"
   python3 -m venv "$venv"
 fi
-echo "== pip install -e .[dds,test] colcon-common-extensions"
+echo "== pip install -e .[dds,test,view] colcon-common-extensions"
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" --upgrade pip
-"$venv/bin/python" -m pip install "${pip_quiet[@]}" -e ".[dds,test]" colcon-common-extensions
+"$venv/bin/python" -m pip install "${pip_quiet[@]}" -e ".[dds,test,view]" colcon-common-extensions
 
 if [ "$job" = demo ]; then
   export PATH="$venv/bin:$PATH"
@@ -110,10 +112,10 @@ if [ -f "$jazzy_setup" ]; then
   # (so no pinocchio here: its wheels need numpy >= 1.26; the kinematics oracle runs standalone).
   constraints="$logs/constraints.txt"
   /usr/bin/python3 -c 'import numpy; print(f"numpy=={numpy.__version__}")' >"$constraints"
-  echo "== pip install (ROS world): yourdfpy xacro pytest-timeout ruff mypy colcon"
+  echo "== pip install (ROS world): yourdfpy xacro viser pytest-timeout ruff mypy selenium colcon"
   "$jazzy_venv/bin/python" -m pip install "${pip_quiet[@]}" -c "$constraints" \
     'yourdfpy>=0.0.56' xacro 'pytest>=7,<8' pytest-timeout 'hypothesis>=6.80' 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
-    colcon-common-extensions
+    'viser>=1.0' 'selenium>=4.10' pillow colcon-common-extensions
   echo "== ROS world: colcon build + colcon test on $(dirname "$jazzy_setup")"
   (
     set +u
