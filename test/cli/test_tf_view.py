@@ -33,6 +33,7 @@ from typing import Any
 from conftest import eventually
 from conftest import Processes
 from conftest import ProcessOutput
+import numpy as np
 import pytest
 
 pytest.importorskip('viser', reason="tf_view needs the 'view' extra (viser)")
@@ -48,6 +49,7 @@ pytestmark = [
     ),
     pytest.mark.timeout(180),
 ]
+URDF = Path(__file__).resolve().parents[2] / 'urdf'
 ARTIFACTS = Path(
     os.environ.get('TF_DEMO_ARTIFACTS', Path(__file__).resolve().parents[2] / 'test-artifacts')
 )
@@ -148,7 +150,7 @@ def scene_region(image: Any) -> Any:
 
 
 def distinct_colours(image: Any) -> int:
-    return len(set(image.getdata()))
+    return len(np.unique(np.asarray(image).reshape(-1, 3), axis=0))
 
 
 def test_every_frame_is_drawn_and_camera_link_moves(spawn: Processes, browser: Any) -> None:
@@ -166,7 +168,7 @@ def test_every_frame_is_drawn_and_camera_link_moves(spawn: Processes, browser: A
     time.sleep(1.5)
     second = scene_region(screenshot(browser, 'circle_2'))
     assert distinct_colours(first) > 20, 'the scene is blank'
-    changed = sum(1 for a, b in zip(first.getdata(), second.getdata(), strict=False) if a != b)
+    changed = int((np.asarray(first) != np.asarray(second)).any(axis=2).sum())
     assert changed > 200, f'only {changed} pixels changed while camera_link circles'
 
 
@@ -219,11 +221,133 @@ def test_killing_a_publisher_turns_its_frames_stale(spawn: Processes, browser: A
     screenshot(browser, 'stale')
 
 
+def set_number(browser: Any, label: str, value: float) -> None:
+    """Type ``value`` into the number box of the slider called ``label`` and press Enter."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+
+    box = browser.find_element(
+        By.XPATH,
+        f'//*[normalize-space()="{label}"]/following::input[@inputmode="decimal" or '
+        '@type="number" or contains(@class, "NumberInput")][1]',
+    )
+    box.click()
+    box.send_keys(Keys.CONTROL, 'a')
+    box.send_keys(str(value), Keys.ENTER)
+
+
+def echoed(echo: ProcessOutput, prefix: str, after: int = 0) -> str | None:
+    """The newest tf_echo line starting with ``prefix`` among lines after index ``after``."""
+    found = [line for line in echo.stdout[after:] if line.startswith(prefix)]
+    return found[-1] if found else None
+
+
+def test_the_fixed_urdf_puts_frame_1_one_metre_above_world(spawn: Processes, browser: Any) -> None:
+    """example_fixed.urdf through robot_state_publisher: the page echoes frame_1 at z = 1."""
+    spawn.start('robot_state_publisher', str(URDF / 'example_fixed.urdf'))
+    _, url = start_view(spawn, '--fixed-frame', 'world')
+    browser.get(url)
+    wait_for_text(browser, 'frame_1', 'Robot example_fixed')
+    choose(browser, 'Frame', 'frame_1')
+    wait_for_text(browser, '- Translation: [0.000, 0.000, 1.000]')
+    screenshot(browser, 'example_fixed')
+
+
+def test_a_slider_moves_the_joint_for_every_listener(spawn: Processes, browser: Any) -> None:
+    """
+    example_revolute.urdf: frame_2 sits 1 m on from frame_1 (so at 1, 0, 1 in world); moving
+    the joint's slider in the page publishes /joint_states, robot_state_publisher turns frame_2,
+    and a separate tf_echo process sees the new rotation.
+    """
+    urdf = str(URDF / 'example_revolute.urdf')
+    spawn.start('robot_state_publisher', urdf)
+    _, url = start_view(spawn, '--urdf', urdf, '--publish-joint-states', '--fixed-frame', 'world')
+    echo = ProcessOutput(spawn.start('tf_echo', 'world', 'frame_2', '10'))
+    echo.wait_for_line('- Translation: [1.000, 0.000, 1.000]', timeout=60)
+    assert echoed(echo, '- Rotation: in Quaternion') == (
+        '- Rotation: in Quaternion [0.000, 0.000, 0.000, 1.000]'
+    )
+    browser.get(url)
+    wait_for_text(browser, 'frame_1_to_frame_2', 'frame_2')
+    screenshot(browser, 'revolute_0')
+    before = len(echo.stdout)
+    set_number(browser, 'frame_1_to_frame_2', 1.5708)
+    turned = eventually(
+        lambda: (
+            echoed(echo, '- Rotation: in Quaternion', before)
+            == '- Rotation: in Quaternion [0.000, 0.000, 0.707, 0.707]'
+        ),
+        30,
+    )
+    assert turned, echo.stdout[before:][-8:]
+    assert echoed(echo, '- Translation:', before) == '- Translation: [1.000, 0.000, 1.000]'
+    screenshot(browser, 'revolute_90')
+
+
+def test_center_and_randomize_buttons_move_every_joint(spawn: Processes, browser: Any) -> None:
+    """Randomize turns frame_2 for a separate listener; Center brings it back to 0."""
+    from selenium.webdriver.common.by import By
+
+    urdf = str(URDF / 'example_revolute.urdf')
+    spawn.start('robot_state_publisher', urdf)
+    _, url = start_view(spawn, '--urdf', urdf, '--publish-joint-states')
+    echo = ProcessOutput(spawn.start('tf_echo', 'world', 'frame_2', '10'))
+    identity = '- Rotation: in Quaternion [0.000, 0.000, 0.000, 1.000]'
+    echo.wait_for_line(identity, timeout=60)
+    browser.get(url)
+    wait_for_text(browser, 'Randomize')
+
+    def click(text: str) -> None:
+        browser.find_element(By.XPATH, f'//button[normalize-space()="{text}"]').click()
+
+    before = len(echo.stdout)
+    click('Randomize')
+    moved = eventually(
+        lambda: echoed(echo, '- Rotation: in Quaternion', before) not in (None, identity), 30
+    )
+    assert moved, echo.stdout[before:][-8:]
+    before = len(echo.stdout)
+    click('Center')
+    assert eventually(lambda: echoed(echo, '- Rotation: in Quaternion', before) == identity, 30)
+
+
+def test_mimic_joints_follow_their_leader_without_a_slider() -> None:
+    """A mimic joint gets no slider; /joint_states carries it as multiplier * leader + offset."""
+    from tf_demo.cli.tf_view import RobotPanel
+    from tf_demo.urdf import RobotModel
+    import viser
+
+    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+    model = RobotModel.from_string(
+        '<robot name="m"><link name="a"/><link name="b"/><link name="c"/>'
+        f'<joint name="lead" type="revolute"><parent link="a"/><child link="b"/>{limit}</joint>'
+        '<joint name="follow" type="revolute"><parent link="b"/><child link="c"/>'
+        f'{limit}<mimic joint="lead" multiplier="2" offset="0.5"/></joint></robot>'
+    )
+    server = viser.ViserServer(host='127.0.0.1', port=0, verbose=False)
+    try:
+        panel = RobotPanel(server, publish=True)
+        panel.set_robot(model, None)
+        assert panel.table is not None
+        assert list(panel.table.free_joints) == ['lead']
+        panel.table.free_joints['lead'].position = 0.25
+        names, positions, _, _ = panel.table.message_fields() or ([], [], [], [])
+        assert dict(zip(names, positions, strict=True)) == {'lead': 0.25, 'follow': 1.0}
+        panel.randomize()
+        lead = panel.table.free_joints['lead'].position
+        assert lead is not None
+        assert -1.0 <= lead <= 1.0
+        panel.center()
+        assert panel.table.free_joints['lead'].position == 0.0
+    finally:
+        server.stop()
+
+
 def test_refuses_bad_options_with_one_line(spawn: Processes) -> None:
     """A rate that is not positive: one line naming the option, exit code 2."""
-    process = spawn.start('tf_view', '--rate', '0')
+    process = spawn.start('tf_view', '--update-rate', '0')
     _, err = process.communicate(timeout=60)
     assert process.returncode == 2
     assert err.strip().endswith(
-        '--rate must be a number of updates per second in (0, 1000], got 0.0'
+        '--update-rate must be a number of updates per second in (0, 1000], got 0.0'
     )

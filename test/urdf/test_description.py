@@ -266,3 +266,35 @@ def test_limit_bounds_default_to_zero_and_continuous_needs_no_limit() -> None:
     assert limit is not None
     assert (limit.lower, limit.upper, limit.effort, limit.velocity) == (0.0, 0.0, 1.0, 2.0)
     assert model.joint('k').limit is None
+
+
+def test_visuals_are_kept_with_their_origin_shape_and_colour():
+    """Visuals in document order; inline and named materials; collisions are not visuals."""
+    model = RobotModel.from_string(
+        robot(
+            '<material name="blue"><color rgba="0 0 1 1"/></material>'
+            '<link name="a"><visual><origin xyz="1 2 3" rpy="0 0 1.5"/>'
+            '<geometry><box size="0.1 0.2 0.3"/></geometry><material name="blue"/></visual>'
+            '<collision><geometry><sphere radius="9"/></geometry></collision></link>'
+            '<link name="b"><visual><geometry><cylinder radius="0.5" length="2"/></geometry>'
+            '<material name="red"><color rgba="1 0 0 0.5"/></material></visual>'
+            '<visual><geometry><mesh filename="package://p/m.stl"/></geometry></visual></link>'
+            + joint('j', 'a', 'b')
+        )
+    )
+    first, second, third = model.description.visuals
+    assert (first.link, first.xyz, first.rpy, first.shape, first.size, first.rgba) == (
+        'a',
+        (1.0, 2.0, 3.0),
+        (0.0, 0.0, 1.5),
+        'box',
+        (0.1, 0.2, 0.3),
+        (0.0, 0.0, 1.0, 1.0),
+    )
+    assert (second.shape, second.size, second.rgba) == ('cylinder', (0.5, 2.0), (1, 0, 0, 0.5))
+    assert (third.shape, third.size, third.filename, third.rgba) == (
+        'mesh',
+        (1.0, 1.0, 1.0),
+        'package://p/m.stl',
+        None,
+    )

@@ -23,6 +23,7 @@ import re
 import pytest
 from tf_demo.urdf import find_package_share
 from tf_demo.urdf import parse_xacro_args
+from tf_demo.urdf import resolve_resource
 from tf_demo.urdf import RobotModel
 from tf_demo.urdf import UrdfBrokenRefError
 from tf_demo.urdf import UrdfError
@@ -203,3 +204,21 @@ def test_device_fifo_directory_huge_and_non_utf8_files_are_refused(tmp_path: Pat
         RobotModel.from_file(latin)
     with pytest.raises(UrdfBrokenRefError, match=r'nope\.urdf: file: no such file$'):
         RobotModel.from_file(tmp_path / 'nope.urdf')
+
+
+def test_resources_resolve_as_resource_retriever_does(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """package:// through the package path, file:// as is, plain paths beside the description."""
+    (tmp_path / 'pkg').mkdir()
+    monkeypatch.setenv('TF_DEMO_PACKAGE_PATH', str(tmp_path))
+    assert resolve_resource('package://pkg/meshes/a.stl') == tmp_path / 'pkg' / 'meshes' / 'a.stl'
+    assert resolve_resource('file:///abs/b.dae') == Path('/abs/b.dae')
+    assert resolve_resource('c.obj', tmp_path) == tmp_path / 'c.obj'
+    assert resolve_resource('/abs/d.obj', tmp_path) == Path('/abs/d.obj')
+    with pytest.raises(ValueError, match=r'only package://, file:// and plain paths'):
+        resolve_resource('https://example.com/e.stl')
+    with pytest.raises(ValueError, match='does not name a package and a file'):
+        resolve_resource('package://pkg')
+    with pytest.raises(LookupError, match="package 'nowhere' not found"):
+        resolve_resource('package://nowhere/x.stl')

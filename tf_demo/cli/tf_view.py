@@ -17,21 +17,31 @@
 
 Every frame of the buffer is drawn as an axes triad with its name and a line to its parent,
 relative to a fixed frame chosen in the page (``--fixed-frame``, else the root of the largest
-tree), updated at ``--rate`` Hz. Static frames have a blue origin, dynamic ones yellow, stale
-ones (no data for ``--stale-after`` seconds) grey with "(stale)" after the name; a split tree
-is shown with a warning. The side panel holds the frame hierarchy with rates and ages, and the
-selected frame's transform in tf_echo's numbers. Needs the ``view`` extra
-(``pip install 'tf_demo[view]'``). ``--ros-args`` is accepted.
+tree), updated at ``--update-rate`` Hz. Static frames have a blue origin, dynamic ones
+yellow, stale ones (no data for ``--stale-after`` seconds) grey with "(stale)" after the
+name; a split tree is shown with a warning. The side panel holds the frame hierarchy with
+rates and ages, and the selected frame's transform in tf_echo's numbers.
+
+The robot model comes from ``--urdf FILE`` (URDF or xacro) or the latched ``robot_description``
+topic: its visuals are drawn in their links where TF puts them (rviz2's RobotModel), and a
+joint panel (joint_state_publisher_gui's) has a slider for every free joint within its limits,
+mimic joints following, with centre and randomise buttons. With "Publish /joint_states" ticked
+(``--publish-joint-states`` ticks it at start) the panel publishes ``/joint_states`` as
+joint_state_publisher does: same QoS, at the node's ``rate`` parameter (Hz, default 10).
+Needs the ``view`` extra (``pip install 'tf_demo[view]'``). ``--ros-args`` is accepted.
 """
 
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 import contextlib
 import io
 import math
+import os
+import random
 import sys
-import time
+import threading
 from typing import Any
 from typing import TYPE_CHECKING
 
@@ -43,7 +53,19 @@ from tf_demo.cli._view_model import echo_markdown
 from tf_demo.cli._view_model import FrameView
 from tf_demo.cli._view_model import SceneView
 from tf_demo.cli._view_model import tree_markdown
+from tf_demo.cli._view_robot import visual_meshes
 from tf_demo.core.lazy_import import lazy_module
+from tf_demo.nodes.helpers import rate_error
+from tf_demo.nodes.joint_state_publisher import FreeJoint
+from tf_demo.nodes.joint_state_publisher import joint_state_message
+from tf_demo.nodes.joint_state_publisher import JointStateTable
+from tf_demo.transport.messages import sensor_msgs
+from tf_demo.transport.messages import std_msgs
+from tf_demo.transport.qos import DurabilityPolicy
+from tf_demo.transport.qos import QoSProfile
+from tf_demo.transport.qos import ReliabilityPolicy
+from tf_demo.urdf import RobotModel
+from tf_demo.urdf import UrdfError
 
 if TYPE_CHECKING:
     import numpy as np
@@ -59,6 +81,12 @@ STALE_COLOR = (150, 150, 150)
 LINK_COLOR = (230, 120, 40)
 AXES_LENGTH = 0.2
 AUTO_FIXED_FRAME = '(root of the largest tree)'
+#: Longest wait of the executor for work, so that a stop is seen promptly.
+SPIN_SLICE_S = 0.1
+#: robot_state_publisher latches robot_description: subscribe as joint_state_publisher does.
+DESCRIPTION_QOS = QoSProfile(
+    depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -67,7 +95,17 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument('--fixed-frame', default=None, help='frame the view is drawn in')
     parser.add_argument('--host', default='127.0.0.1', help='address to serve on')
     parser.add_argument('--port', type=int, default=8080, help='port to serve on (0: any)')
-    parser.add_argument('--rate', type=float, default=20.0, help='updates per second')
+    parser.add_argument(
+        '--update-rate', type=float, default=20.0, metavar='HZ', help='view updates per second'
+    )
+    parser.add_argument(
+        '--urdf', default=None, metavar='FILE', help='robot description (URDF or xacro) to draw'
+    )
+    parser.add_argument(
+        '--publish-joint-states',
+        action='store_true',
+        help="publish the joint panel's positions on /joint_states from the start",
+    )
     parser.add_argument(
         '--stale-after',
         type=float,
@@ -80,8 +118,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 def options_error(options: argparse.Namespace) -> str | None:
     """Return what is wrong with the options, or None."""
-    if not (math.isfinite(options.rate) and 0.0 < options.rate <= 1000.0):
-        return f'--rate must be a number of updates per second in (0, 1000], got {options.rate}'
+    if not (math.isfinite(options.update_rate) and 0.0 < options.update_rate <= 1000.0):
+        rate = options.update_rate
+        return f'--update-rate must be a number of updates per second in (0, 1000], got {rate}'
     if not (math.isfinite(options.stale_after) and options.stale_after > 0.0):
         return f'--stale-after must be a positive number of seconds, got {options.stale_after}'
     if not 0 <= options.port <= 65535:
@@ -106,7 +145,7 @@ class TfView:
         self._links: Any = None
         # As rviz2 opens: a 1 m grid on the fixed frame's xy plane, seen from above and aside.
         server.scene.add_grid('/grid', width=10.0, height=10.0, cell_size=1.0, section_size=5.0)
-        server.initial_camera.position = (3.0, -3.0, 2.5)
+        server.initial_camera.position = (2.0, -2.0, 1.5)
         server.initial_camera.look_at = (0.0, 0.0, 0.0)
         gui = server.gui
         self._fixed = gui.add_dropdown(
@@ -185,6 +224,127 @@ class TfView:
             self._links.points = points
 
 
+class RobotPanel:
+    """
+    The robot model and the joint panel: meshes placed by TF, sliders that publish joint states.
+
+    :meth:`set_robot` may run on the node's thread (a new ``robot_description``) while
+    :meth:`place` runs on the view's: a lock keeps them apart.
+    """
+
+    def __init__(self, server: Any, publish: bool) -> None:
+        self.server = server
+        self.table: JointStateTable | None = None
+        self.problems: list[str] = []
+        self._lock = threading.Lock()
+        self._links: dict[str, Any] = {}
+        self._handles: list[Any] = []
+        self._sliders: dict[str, Any] = {}
+        self._random = random.Random()
+        gui = server.gui
+        with gui.add_folder('Joints'):
+            self._publish = gui.add_checkbox('Publish /joint_states', initial_value=publish)
+            center = gui.add_button('Center')
+            center.on_click(lambda _event: self.center())
+            randomize = gui.add_button('Randomize')
+            randomize.on_click(lambda _event: self.randomize())
+            self._joints_folder = gui.add_folder('Positions')
+            self._status = gui.add_markdown('No robot description yet.')
+
+    @property
+    def publishing(self) -> bool:
+        """Whether the panel publishes ``/joint_states``."""
+        return bool(self._publish.value)
+
+    def set_robot(self, model: RobotModel, base_dir: str | None) -> None:
+        """Draw ``model``'s visuals and give each of its free joints a slider."""
+        meshes, problems = visual_meshes(model.description.visuals, base_dir)
+        table = JointStateTable.from_model(model)
+        with self._lock:
+            for handle in self._handles:
+                handle.remove()
+            self._handles, self._links, self._sliders = [], {}, {}
+            scene = self.server.scene
+            keys: dict[str, str] = {}
+            for index, mesh in enumerate(meshes):
+                if mesh.link not in keys:
+                    keys[mesh.link] = f'/robot/l{len(keys)}'  # link names may hold '/'
+                    link = scene.add_frame(keys[mesh.link], show_axes=False, visible=False)
+                    self._links[mesh.link] = link
+                    self._handles.append(link)
+                self._handles.append(
+                    scene.add_mesh_simple(
+                        f'{keys[mesh.link]}/v{index}',
+                        mesh.vertices,
+                        mesh.faces,
+                        color=mesh.rgb,
+                        opacity=None if mesh.opacity >= 1.0 else mesh.opacity,
+                        position=mesh.position,
+                        wxyz=mesh.wxyz,
+                    )
+                )
+            with self._joints_folder:
+                for joint_name, joint in table.free_joints.items():
+                    slider = self.server.gui.add_slider(
+                        joint_name,
+                        min=joint.minimum,
+                        max=joint.maximum,
+                        step=(joint.maximum - joint.minimum) / 1000 or 0.001,
+                        initial_value=joint.zero,
+                    )
+                    slider.on_update(self._slider_moved(joint_name))
+                    self._sliders[joint_name] = slider
+                    self._handles.append(slider)
+            self.table = table
+            self.problems = problems + table.warnings
+        lines = [f'Robot `{model.name}`: {len(table.free_joints)} movable joints.']
+        self._status.content = '\n\n'.join(lines + [f'**Warning:** {p}' for p in self.problems])
+
+    def _slider_moved(self, joint_name: str) -> Callable[[object], None]:
+        def moved(_event: object) -> None:
+            table = self.table
+            if table is not None and joint_name in table.free_joints:
+                table.free_joints[joint_name].position = float(self._sliders[joint_name].value)
+
+        return moved
+
+    def _set_positions(self, pick: Callable[[FreeJoint], float]) -> None:
+        table = self.table
+        if table is None:
+            return
+        for joint_name, joint in table.free_joints.items():
+            joint.position = pick(joint)
+            self._sliders[joint_name].value = joint.position
+
+    def center(self) -> None:
+        """Every free joint to its centre (0, or the middle of limits that exclude 0)."""
+        self._set_positions(lambda joint: joint.zero)
+
+    def randomize(self) -> None:
+        """Every free joint to a random position within its limits."""
+        self._set_positions(lambda joint: self._random.uniform(joint.minimum, joint.maximum))
+
+    def place(self, scene: SceneView) -> None:
+        """Put each link's meshes where TF has the link in the fixed frame (hidden if unknown)."""
+        poses = {f.name: f for f in scene.frames if f.root == (scene.roots or ('',))[0]}
+        with self._lock:
+            for link_name, link in self._links.items():
+                frame = poses.get(link_name)
+                if frame is None or frame.translation is None or frame.rotation is None:
+                    link.visible = False
+                    continue
+                link.position = frame.translation
+                link.wxyz = _wxyz(frame.rotation)
+                link.visible = True
+
+
+def _load_robot(path: str) -> RobotModel:
+    try:
+        return RobotModel.from_file(path)
+    except (UrdfError, ValueError) as error:
+        raise ToolError(str(error)) from error
+
+
 def _serve(options: argparse.Namespace) -> int:
     try:
         import viser
@@ -195,10 +355,23 @@ def _serve(options: argparse.Namespace) -> int:
     from tf_demo import transport
     from tf_demo.ros import Buffer
     from tf_demo.ros import TransformListener
+    from tf_demo.transport.executors import SingleThreadedExecutor
 
+    model = _load_robot(options.urdf) if options.urdf is not None else None
     node = transport.create_node(TOOL)
+    if not node.has_parameter('rate'):
+        node.declare_parameter('rate', 10)
+    rate = node.get_parameter('rate').value
+    problem = (
+        'must be a number of Hz'
+        if isinstance(rate, bool) or not isinstance(rate, (int, float))
+        else rate_error(float(rate))
+    )
+    if problem is not None:
+        node.destroy_node()
+        raise ToolError(f'parameter rate {problem}, got {rate!r}')
     buffer = Buffer(node=node)
-    listener = TransformListener(buffer, node, spin_thread=True)
+    listener = TransformListener(buffer, node)
     try:
         with contextlib.redirect_stdout(io.StringIO()):  # viser's banner: our line says it
             server = viser.ViserServer(host=options.host, port=options.port, verbose=False)
@@ -207,16 +380,49 @@ def _serve(options: argparse.Namespace) -> int:
         node.destroy_node()
         raise ToolError(f'cannot serve on {options.host}:{options.port}: {error}') from error
     view = TfView(server, options.fixed_frame)
-    print(f'tf_view: serving on http://{options.host}:{server.get_port()}', flush=True)
-    period = 1.0 / options.rate
+    robot = RobotPanel(server, options.publish_joint_states)
+    if model is not None:
+        robot.set_robot(model, os.path.dirname(os.path.abspath(options.urdf)))
+    else:
+
+        def on_description(message: std_msgs.String) -> None:
+            try:
+                received = RobotModel.from_string(message.data, source='robot_description')
+            except UrdfError as error:
+                node.get_logger().warning(f'Invalid robot_description given, ignoring: {error}')
+                return
+            robot.set_robot(received, None)
+
+        node.create_subscription(
+            std_msgs.String, 'robot_description', on_description, DESCRIPTION_QOS
+        )
+    joint_states = node.create_publisher(sensor_msgs.JointState, 'joint_states', 10)
+
+    def publish_joint_states() -> None:
+        table = robot.table
+        fields = table.message_fields() if table is not None and robot.publishing else None
+        if fields is not None:
+            stamp = node.get_clock().now().to_msg()
+            joint_states.publish(joint_state_message(sensor_msgs.JointState, stamp, fields))
+
+    node.create_timer(1.0 / float(rate), publish_joint_states)
     clock = node.get_clock()
+
+    def redraw() -> None:
+        scene = view.update(buffer.core, clock.now().nanoseconds, options.stale_after)
+        robot.place(scene)
+
+    node.create_timer(1.0 / options.update_rate, redraw)
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    print(f'tf_view: serving on http://{options.host}:{server.get_port()}', flush=True)
     try:
         while transport.ok():
-            view.update(buffer.core, clock.now().nanoseconds, options.stale_after)
-            time.sleep(period)
+            executor.spin_once(timeout_sec=SPIN_SLICE_S)
     finally:
         with contextlib.redirect_stdout(io.StringIO()):
             server.stop()
+        executor.shutdown()
         listener.unregister()
         node.destroy_node()
     return 0

@@ -25,6 +25,7 @@ from tf_demo.urdf.description import Limit
 from tf_demo.urdf.description import Mimic
 from tf_demo.urdf.description import parse_robot
 from tf_demo.urdf.description import RobotDescription
+from tf_demo.urdf.description import Visual
 from tf_demo.urdf.errors import UrdfBrokenRefError
 from tf_demo.urdf.errors import UrdfError
 from tf_demo.urdf.errors import UrdfMalformedError
@@ -33,6 +34,7 @@ from tf_demo.urdf.loading import expand_xacro
 from tf_demo.urdf.loading import find_package_share
 from tf_demo.urdf.loading import parse_xacro_args
 from tf_demo.urdf.loading import read_description
+from tf_demo.urdf.loading import resolve_resource
 from tf_demo.urdf.model import JointPositionError
 from tf_demo.urdf.model import JointTransform
 from tf_demo.urdf.model import kdl_quaternion
@@ -50,10 +52,12 @@ __all__ = [
     'UrdfError',
     'UrdfMalformedError',
     'UrdfUnsupportedError',
+    'Visual',
     'expand_xacro',
     'find_package_share',
     'kdl_quaternion',
     'parse_robot',
     'parse_xacro_args',
     'read_description',
+    'resolve_resource',
 ]

@@ -100,6 +100,25 @@ class JointDescription:
 
 
 @dataclass(frozen=True)
+class Visual:
+    """
+    One ``<visual>`` of a link: its origin in the link, its shape and its colour.
+
+    ``size`` is the shape's numbers: ``box`` (x, y, z), ``cylinder`` (radius, length),
+    ``sphere`` (radius,), ``mesh`` its scale (1, 1, 1 by default). ``rgba`` is the inline or
+    named material's colour (None when the URDF gives none).
+    """
+
+    link: str
+    xyz: Vec3
+    rpy: Vec3
+    shape: str
+    size: tuple[float, ...]
+    filename: str | None = None
+    rgba: tuple[float, float, float, float] | None = None
+
+
+@dataclass(frozen=True)
 class RobotDescription:
     """A validated robot: one tree of links joined by joints, in document order."""
 
@@ -111,6 +130,8 @@ class RobotDescription:
     links_with_inertia: frozenset[str] = frozenset()
     warnings: tuple[str, ...] = ()
     """Problems upstream also tolerates (e.g. a mimic of a missing joint), one line each."""
+    visuals: tuple[Visual, ...] = ()
+    """The links' visual geometry in document order (what rviz2's RobotModel draws)."""
 
 
 class _Reader:
@@ -318,8 +339,13 @@ def _parse_joint(reader: _Reader, node: etree._Element) -> JointDescription:
     )
 
 
-def _check_link_numbers(reader: _Reader, node: etree._Element, name: str) -> None:
-    """Check the numbers urdfdom reads in a link: inertial, visual and collision elements."""
+def _read_link_geometry(
+    reader: _Reader,
+    node: etree._Element,
+    name: str,
+    materials: dict[str, tuple[float, float, float, float]],
+) -> list[Visual]:
+    """Check the numbers urdfdom reads in a link (inertial, visual, collision); return visuals."""
     element = f"link '{name}'"
     inertial = node.find('inertial')
     if inertial is not None:
@@ -329,10 +355,11 @@ def _check_link_numbers(reader: _Reader, node: etree._Element, name: str) -> Non
             part = inertial.find(tag)
             for attribute in attributes if part is not None else ():
                 reader.optional_number(part, attribute, f'{where} <{tag}>', None)
+    visuals: list[Visual] = []
     for tag in ('visual', 'collision'):
         for part in node.iterchildren(tag):
             where = f'{element} <{tag}>'
-            reader.origin(part, where)
+            xyz, rpy = reader.origin(part, where)
             geometry = part.find('geometry')
             shape = (
                 next((c for c in geometry if isinstance(c.tag, str)), None)
@@ -341,12 +368,52 @@ def _check_link_numbers(reader: _Reader, node: etree._Element, name: str) -> Non
             )
             if shape is None:
                 continue
+            size: list[float] = []
             for attribute, count in _SHAPE_NUMBERS.get(shape.tag, ()):
                 shape_element = f'{where} <{shape.tag}>'
                 if count == 1:
-                    reader.optional_number(shape, attribute, shape_element, None)
+                    size.append(
+                        reader.optional_number(shape, attribute, shape_element, 0.0) or 0.0
+                    )
                 else:
-                    reader.numbers(shape, attribute, shape_element, count)
+                    size.extend(
+                        reader.numbers(shape, attribute, shape_element, count) or (1.0,) * 3
+                    )
+            if tag == 'visual' and shape.tag in _SHAPE_NUMBERS:
+                rgba = _material_colour(reader, part.find('material'), where, materials)
+                filename = shape.get('filename') if shape.tag == 'mesh' else None
+                visuals.append(Visual(name, xyz, rpy, shape.tag, tuple(size), filename, rgba))
+    return visuals
+
+
+def _material_colour(
+    reader: _Reader,
+    material: etree._Element | None,
+    where: str,
+    materials: dict[str, tuple[float, float, float, float]],
+) -> tuple[float, float, float, float] | None:
+    """Return a ``<material>``'s ``<color rgba>``, inline or by name (None without one)."""
+    if material is None:
+        return None
+    color = material.find('color')
+    if color is not None:
+        rgba = reader.numbers(color, 'rgba', f'{where} <material> <color>', 4)
+        if rgba is not None:
+            return (rgba[0], rgba[1], rgba[2], rgba[3])
+    return materials.get(material.get('name') or '')
+
+
+def _global_materials(
+    reader: _Reader, root: etree._Element
+) -> dict[str, tuple[float, float, float, float]]:
+    """Return the colours of the robot's named top-level ``<material>`` elements."""
+    materials: dict[str, tuple[float, float, float, float]] = {}
+    for material in root.iterchildren('material'):
+        name = material.get('name')
+        rgba = _material_colour(reader, material, f"material '{name}'", {})
+        if name and rgba is not None:
+            materials[name] = rgba
+    return materials
 
 
 def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
@@ -378,6 +445,8 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
         )
 
     links: list[str] = []
+    visuals: list[Visual] = []
+    materials = _global_materials(reader, root)
     link_lines: dict[str, int | None] = {}
     inertial_links: set[str] = set()
     for node in root.iterchildren('link'):
@@ -392,7 +461,7 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
                 node,
             )
         link_lines[link_name] = _line(node)
-        _check_link_numbers(reader, node, link_name)
+        visuals.extend(_read_link_geometry(reader, node, link_name, materials))
         if node.find('inertial') is not None:
             inertial_links.add(link_name)
         links.append(link_name)
@@ -474,6 +543,7 @@ def parse_robot(xml: str | bytes, source: str = '<string>') -> RobotDescription:
         roots[0],
         frozenset(inertial_links),
         tuple(warnings),
+        tuple(visuals),
     )
 
 

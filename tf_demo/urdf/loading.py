@@ -98,6 +98,34 @@ def find_package_share(package: str, package_paths: Sequence[str | Path] | None 
     raise PackageNotFoundError(msg)
 
 
+def resolve_resource(
+    uri: str, base_dir: str | Path | None = None, package_paths: Sequence[str | Path] | None = None
+) -> Path:
+    """
+    Return the file a URDF resource names, as resource_retriever resolves it.
+
+    ``package://pkg/rel`` is ``rel`` in ``pkg``'s share directory (:func:`find_package_share`),
+    ``file:///abs`` the absolute path; a plain path is taken relative to ``base_dir`` (the
+    description's folder). The file need not exist.
+
+    :raises PackageNotFoundError: for a package found nowhere.
+    :raises ValueError: for another URL scheme or an empty path.
+    """
+    if uri.startswith('package://'):
+        package, _, relative = uri[len('package://') :].partition('/')
+        if not package or not relative:
+            msg = f'resource {uri!r} does not name a package and a file in it'
+            raise ValueError(msg)
+        return find_package_share(package, package_paths) / relative
+    if uri.startswith('file://'):
+        return Path(uri[len('file://') :])
+    if '://' in uri or not uri:
+        msg = f'resource {uri!r}: only package://, file:// and plain paths are supported'
+        raise ValueError(msg)
+    path = Path(uri)
+    return path if path.is_absolute() or base_dir is None else Path(base_dir) / path
+
+
 def is_xacro_path(path: str | Path) -> bool:
     """Tell whether a file must be expanded with xacro (its name ends in ``.xacro``)."""
     return str(path).endswith('.xacro')
