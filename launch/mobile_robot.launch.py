@@ -20,7 +20,7 @@ and camera) from the xacro, joint_state_publisher feeds it the wheel joints (it 
 from ``robot_description``), and dynamic_tf_pub moves odom -> base_footprint on a circle (a
 stand-in for odometry).
 
-    ros2 launch tf_demo mobile_robot.launch.py [rviz:=false] [radius:=1.0]
+    ros2 launch tf_demo mobile_robot.launch.py [viewer:=rviz|web|none] [radius:=1.0]
 """
 
 import os
@@ -34,10 +34,10 @@ from launch import LaunchDescription
 
 sys.path.insert(0, os.path.dirname(__file__))  # tf_demo_launch is installed beside this file
 from tf_demo_launch import radius_argument
-from tf_demo_launch import rviz
-from tf_demo_launch import rviz_argument
 from tf_demo_launch import share_path
 from tf_demo_launch import tf_demo_node
+from tf_demo_launch import viewer
+from tf_demo_launch import viewer_argument
 
 
 def generate_launch_description() -> LaunchDescription:
@@ -45,7 +45,7 @@ def generate_launch_description() -> LaunchDescription:
     robot_description = ParameterValue(Command(['xacro ', xacro_file]), value_type=str)
     return LaunchDescription(
         [
-            rviz_argument(),
+            viewer_argument(),
             radius_argument(),
             tf_demo_node(
                 executable='robot_state_publisher',
@@ -60,6 +60,6 @@ def generate_launch_description() -> LaunchDescription:
                 child_frame='base_footprint',
                 radius=LaunchConfiguration('radius'),
             ),
-            rviz('-f', 'odom'),
+            *viewer('odom'),
         ]
     )

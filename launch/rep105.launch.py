@@ -19,7 +19,7 @@ map -> odom is a static identity (stand-in for localisation), odom -> base_footp
 circle (stand-in for odometry) and the robot's static frames come from
 ``config/rep105_static_transforms.yaml``.
 
-    ros2 launch tf_demo rep105.launch.py [rviz:=false]
+    ros2 launch tf_demo rep105.launch.py [viewer:=rviz|web|none]
 """
 
 import os
@@ -28,16 +28,16 @@ import sys
 from launch import LaunchDescription
 
 sys.path.insert(0, os.path.dirname(__file__))  # tf_demo_launch is installed beside this file
-from tf_demo_launch import rviz
-from tf_demo_launch import rviz_argument
 from tf_demo_launch import share_path
 from tf_demo_launch import tf_demo_node
+from tf_demo_launch import viewer
+from tf_demo_launch import viewer_argument
 
 
 def generate_launch_description() -> LaunchDescription:
     return LaunchDescription(
         [
-            rviz_argument(),
+            viewer_argument(),
             tf_demo_node(
                 executable='static_tf_pub',
                 name='robot_static_frames',
@@ -57,6 +57,6 @@ def generate_launch_description() -> LaunchDescription:
                 parent_frame='odom',
                 child_frame='base_footprint',
             ),
-            rviz('-f', 'map'),
+            *viewer('map'),
         ]
     )

@@ -13,9 +13,10 @@
 # limitations under the License.
 
 """
-The course demo: static base_link -> camera_link, moving odom -> base_link, and rviz2.
+The course demo: static base_link -> camera_link, moving odom -> base_link, and a viewer
+(rviz2, or tf_view in the browser).
 
-    ros2 launch tf_demo tf_demo.launch.py [rviz:=false] [radius:=2.0]
+    ros2 launch tf_demo tf_demo.launch.py [viewer:=rviz|web|none] [radius:=2.0]
 """
 
 import os
@@ -27,15 +28,15 @@ from launch import LaunchDescription
 
 sys.path.insert(0, os.path.dirname(__file__))  # tf_demo_launch is installed beside this file
 from tf_demo_launch import radius_argument
-from tf_demo_launch import rviz
-from tf_demo_launch import rviz_argument
 from tf_demo_launch import tf_demo_node
+from tf_demo_launch import viewer
+from tf_demo_launch import viewer_argument
 
 
 def generate_launch_description() -> LaunchDescription:
     return LaunchDescription(
         [
-            rviz_argument(),
+            viewer_argument(),
             radius_argument(),
             tf_demo_node(executable='static_tf_pub', name='static_tf_pub'),
             tf_demo_node(
@@ -43,6 +44,6 @@ def generate_launch_description() -> LaunchDescription:
                 name='dynamic_tf_pub',
                 radius=LaunchConfiguration('radius'),
             ),
-            rviz(),
+            *viewer('odom'),
         ]
     )

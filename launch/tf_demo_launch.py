@@ -13,7 +13,7 @@
 # limitations under the License.
 
 """
-What tf_demo's launch files share: the rviz2 switch, the circle's radius, this package's nodes.
+What tf_demo's launch files share: the viewer switch, the circle's radius, this package's nodes.
 
 The launch files import it from their own directory (it is installed beside them, in
 ``share/tf_demo/launch``).
@@ -25,6 +25,7 @@ from ament_index_python.packages import get_package_share_directory
 from ament_index_python.packages import PackageNotFoundError
 from launch.actions import DeclareLaunchArgument
 from launch.conditions import IfCondition
+from launch.substitutions import EqualsSubstitution
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
 
@@ -43,12 +44,17 @@ def rviz_installed() -> bool:
     return True
 
 
-def rviz_argument() -> DeclareLaunchArgument:
-    """``rviz:=true|false``, true by default where rviz2 is installed."""
+VIEWERS = ('rviz', 'web', 'none')
+
+
+def viewer_argument() -> DeclareLaunchArgument:
+    """``viewer:=rviz|web|none``: rviz2 where it is installed, else tf_view in the browser."""
     return DeclareLaunchArgument(
-        'rviz',
-        default_value=str(rviz_installed()).lower(),
-        description='Start rviz2 (default: true where rviz2 is installed)',
+        'viewer',
+        default_value='rviz' if rviz_installed() else 'web',
+        choices=list(VIEWERS),
+        description='rviz: rviz2; web: tf_view, a 3D view in the browser; none: no viewer '
+        '(default: rviz where rviz2 is installed, else web)',
     )
 
 
@@ -70,13 +76,33 @@ def tf_demo_node(*, executable: str, name: str, **parameters: object) -> Node:
     )
 
 
-def rviz(*arguments: str) -> Node:
-    """rviz2 on tf_demo's configuration (``arguments`` added), started when ``rviz:=true``."""
-    return Node(
-        package='rviz2',
-        executable='rviz2',
-        name='rviz2',
-        arguments=['-d', share_path('config', 'tf_demo.rviz'), *arguments],
-        condition=IfCondition(LaunchConfiguration('rviz')),
-        output='screen',
-    )
+def viewer(fixed_frame: str, *rviz_arguments: str) -> list[Node]:
+    """
+    The chosen viewer on ``fixed_frame``: rviz2 on tf_demo's configuration (``rviz_arguments``
+    added) when ``viewer:=rviz``, tf_view (which prints its URL) when ``viewer:=web``.
+    """
+    chosen = LaunchConfiguration('viewer')
+    return [
+        Node(
+            package='rviz2',
+            executable='rviz2',
+            name='rviz2',
+            arguments=[
+                '-d',
+                share_path('config', 'tf_demo.rviz'),
+                '-f',
+                fixed_frame,
+                *rviz_arguments,
+            ],
+            condition=IfCondition(EqualsSubstitution(chosen, 'rviz')),
+            output='screen',
+        ),
+        Node(
+            package='tf_demo',
+            executable='tf_view',
+            name='tf_view',
+            arguments=['--fixed-frame', fixed_frame],
+            condition=IfCondition(EqualsSubstitution(chosen, 'web')),
+            output='screen',
+        ),
+    ]

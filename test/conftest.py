@@ -369,7 +369,8 @@ class ProcessOutput:
         """Lines of both streams in arrival order."""
         self._arrived = threading.Condition()
         for stream, sink in ((process.stdout, self.stdout), (process.stderr, self.stderr)):
-            threading.Thread(target=self._pump, args=(stream, sink), daemon=True).start()
+            if stream is not None:  # None: not a pipe (stderr merged into stdout)
+                threading.Thread(target=self._pump, args=(stream, sink), daemon=True).start()
 
     def _pump(self, stream: IO[str], sink: list[str]) -> None:
         for raw in stream:

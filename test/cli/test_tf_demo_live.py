@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 from typing import Any
 
 from conftest import REPO_ROOT
@@ -28,10 +29,14 @@ STARTUP_TIMEOUT_S = 60.0
 
 def test_tf_demo_live_shows_listener_tf_echo_and_its_own_lines(spawn: Any) -> None:
     """The README demo relays tf_listener and tf_echo, prints transforms, exits 0 after -d."""
-    live = spawn.start('tf_demo_live', '--duration', '12', '--rate', '4')
+    live = spawn.start('tf_demo_live', '--duration', '12', '--rate', '4', '--view-port', '0')
     out, err = live.communicate(timeout=STARTUP_TIMEOUT_S + 30)
     assert live.returncode == 0, err
     lines = out.splitlines()
+    if importlib.util.find_spec('viser') is not None:  # the 'view' extra: tf_view, its URL
+        assert any(line.startswith('[tf_view] tf_view: serving on http://') for line in lines)
+    else:
+        assert "tf_demo_live: tf_view not started: install the 'view' extra" in out
     own = [line for line in lines if line.startswith('odom <- camera_link @ ')]
     assert own, out
     assert own[-1].split('translation [')[1].split(']')[0].endswith('+0.200')
@@ -52,7 +57,7 @@ def test_tf_demo_live_robot_mode_runs_the_rep105_robot_and_echoes_odom_to_lidar(
 
     model = RobotModel.from_file(REPO_ROOT / 'urdf' / 'mobile_robot.urdf.xacro')
     (_, _, lidar_height), _ = model.link_poses({})['lidar_link']
-    live = spawn.start('tf_demo_live', '--robot', '--duration', '12', '--rate', '4')
+    live = spawn.start('tf_demo_live', '--robot', '--duration', '12', '--rate', '4', '--no-view')
     out, err = live.communicate(timeout=STARTUP_TIMEOUT_S + 30)
     assert live.returncode == 0, err
     lines = out.splitlines()

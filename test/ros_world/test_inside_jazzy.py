@@ -28,6 +28,7 @@ import time
 from typing import Any
 
 from conftest import eventually
+from conftest import ProcessOutput
 from conftest import REPO_ROOT
 from conftest import run_captured
 import pytest
@@ -315,10 +316,11 @@ except KeyboardInterrupt:
 
 # -- launch files ---------------------------------------------------------------------------------
 
+# rviz2 is not built here: the default viewer is then tf_view (web), which prints its URL.
 LAUNCHES: dict[str, tuple[tuple[str, ...], tuple[str, str]]] = {
-    'tf_demo.launch.py': (('rviz:=false',), ('odom', 'camera_link')),
+    'tf_demo.launch.py': (('viewer:=none',), ('odom', 'camera_link')),
     'rep105.launch.py': ((), ('map', 'base_link')),
-    'mobile_robot.launch.py': (('rviz:=false',), ('odom', 'lidar_link')),
+    'mobile_robot.launch.py': (('viewer:=web',), ('odom', 'lidar_link')),
 }
 
 
@@ -327,14 +329,20 @@ def test_ros2_launch_starts_the_tree(
     jazzy_env: dict[str, str], real_tf2: RealTf2Listener, launch_file: str
 ) -> None:
     """``ros2 launch tf_demo <file>`` (no rviz): a real tf2_ros listener sees the tree."""
+    has_view = 'viewer:=none' not in LAUNCHES[launch_file][0]
     args, (target, source) = LAUNCHES[launch_file]
     with started(['ros2', 'launch', 'tf_demo', launch_file, *args], jazzy_env) as launch:
+        output = ProcessOutput(launch)
         transform = real_tf2.lookup(target, source, timeout=40.0)
+        if has_view:
+            output.wait_for_line('tf_view: serving on http://', timeout=60, anywhere=True)
         code = stop(launch, timeout=30)
-        output = launch.stdout.read() if launch.stdout else ''
-    assert transform is not None, output
-    assert code == 0, output
-    assert 'Traceback' not in output, output
+        time.sleep(0.1)  # let the pump threads drain the pipe
+    text = '\n'.join(output.lines)
+    assert transform is not None, text
+    assert code == 0, text
+    assert 'Traceback' not in text, text
+    assert ('tf_view: serving on http://' in text) == has_view, text
 
 
 # -- ros2cli on our nodes -------------------------------------------------------------------------

@@ -24,7 +24,12 @@ With ``--robot`` the children are the REP-105 mobile robot instead: ``robot_stat
 ``urdf/mobile_robot.urdf.xacro``, ``joint_state_publisher`` (model from ``robot_description``),
 ``dynamic_tf_pub`` moving odom -> base_footprint, and ``tf_echo odom lidar_link``.
 
+Where the ``view`` extra is installed it also starts ``tf_view`` (the live 3D view in the
+browser, fixed frame ``--target``), whose line ``tf_view: serving on http://...`` gives the URL
+(shown even with ``--quiet``); ``--no-view`` leaves it out, ``--view-port`` picks the port.
+
     tf_demo_live [--robot] [--duration S] [--rate HZ] [--target odom] [--source F] [--quiet]
+                 [--no-echo] [--no-view] [--view-port PORT]
 """
 
 from __future__ import annotations
@@ -32,6 +37,7 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 from dataclasses import dataclass
+import importlib.util
 import math
 import os
 from pathlib import Path
@@ -56,6 +62,7 @@ ROBOT_XACRO = 'mobile_robot.urdf.xacro'
 DEFAULT_SOURCE = 'camera_link'
 ROBOT_DEFAULT_SOURCE = 'lidar_link'
 ECHO_TOOL = 'tf_echo'
+VIEW_TOOL = 'tf_view'
 CHILD_STOP_TIMEOUT_S = 5.0
 SPIN_SLICE_S = 0.1
 
@@ -84,6 +91,12 @@ def parse_arguments(argv: Sequence[str]) -> argparse.Namespace:
         '--quiet', action='store_true', help="hide the child processes' own output"
     )
     parser.add_argument('--no-echo', action='store_true', help='do not start tf_echo')
+    parser.add_argument(
+        '--no-view', action='store_true', help='do not start tf_view (the 3D view in the browser)'
+    )
+    parser.add_argument(
+        '--view-port', type=_port, default=8080, help="tf_view's port (8080; taken: the next)"
+    )
     options = parser.parse_args(list(argv))
     if options.source is None:
         options.source = ROBOT_DEFAULT_SOURCE if options.robot else DEFAULT_SOURCE
@@ -97,6 +110,18 @@ def _rate(text: str) -> float:
     problem = rate_error(value)
     if problem is not None:
         msg = f'{problem}, got {text}'
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def _port(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        msg = f'not a port number: {text!r}'
+        raise argparse.ArgumentTypeError(msg) from None
+    if not 0 <= value <= 65535:
+        msg = f'must be in 0..65535, got {text}'
         raise argparse.ArgumentTypeError(msg)
     return value
 
@@ -202,7 +227,7 @@ def demo_nodes(robot: bool) -> list[tuple[str, list[str]]]:
 
 def start_children(options: argparse.Namespace, children: list[Child]) -> None:
     """
-    Start the demo nodes and tf_echo (same environment, so the same ROS_DOMAIN_ID).
+    Start the demo nodes, tf_echo and tf_view (same environment, so the same ROS_DOMAIN_ID).
 
     Each child is appended to ``children`` as soon as it runs, so a Ctrl-C in the middle still
     leaves every started child to :func:`stop_children`.
@@ -213,6 +238,17 @@ def start_children(options: argparse.Namespace, children: list[Child]) -> None:
     if not options.no_echo:
         command = child_command(f'tf_demo.cli.{ECHO_TOOL}', options.target, options.source)
         children.append(start_child(ECHO_TOOL, command, options.quiet))
+    if not options.no_view:
+        if importlib.util.find_spec('viser') is None:
+            print(
+                "tf_demo_live: tf_view not started: install the 'view' extra "
+                "(pip install 'tf_demo[view]') for the 3D view in the browser",
+                flush=True,
+            )
+            return
+        view_args = ('--fixed-frame', options.target, '--port', str(options.view_port))
+        command = child_command(f'tf_demo.cli.{VIEW_TOOL}', *view_args)
+        children.append(start_child(VIEW_TOOL, command, quiet=False))  # its line is the URL
 
 
 def stop_children(children: list[Child]) -> list[int]:
