@@ -80,6 +80,8 @@ DYNAMIC_COLOR = (236, 200, 0)
 STALE_COLOR = (150, 150, 150)
 LINK_COLOR = (230, 120, 40)
 AXES_LENGTH = 0.2
+#: Labels moved per update at most (a label is one message; the triads are one in all).
+LABEL_MOVES_PER_UPDATE = 50
 AUTO_FIXED_FRAME = '(root of the largest tree)'
 #: Longest wait of the executor for work, so that a stop is seen promptly.
 SPIN_SLICE_S = 0.1
@@ -140,9 +142,14 @@ class TfView:
         self.server = server
         self.fixed_frame = fixed_frame
         self.selected: str | None = None
-        self._frames: dict[str, tuple[Any, Any]] = {}
-        self._created = 0
+        self._axes: Any = None
+        self._origins: Any = None
         self._links: Any = None
+        self._labels: dict[str, Any] = {}
+        #: Per label: the update it was last moved at, where to and its text.
+        self._label_state: dict[str, tuple[int, tuple[float, ...], str]] = {}
+        self._created = 0
+        self._tick = 0
         # As rviz2 opens: a 1 m grid on the fixed frame's xy plane, seen from above and aside.
         server.scene.add_grid('/grid', width=10.0, height=10.0, cell_size=1.0, section_size=5.0)
         server.initial_camera.position = (2.0, -2.0, 1.5)
@@ -178,42 +185,89 @@ class TfView:
             self._select.options = ('', *sorted(names))
             fixed_options = (AUTO_FIXED_FRAME, *sorted(names))
             self._fixed.options = fixed_options
-        for frame in scene.frames:
-            self._draw_frame(frame)
-        for gone in set(self._frames) - set(names):
-            for handle in self._frames.pop(gone):
-                handle.remove()
-        self._draw_links(scene)
-        self._warning.content = '\n\n'.join(f'**Warning:** {text}' for text in scene.warnings)
-        self._tree.content = f'Fixed frame: `{scene.fixed_frame}`\n\n' + tree_markdown(scene)
-        self._echo.content = echo_markdown(core, scene.fixed_frame, self.selected)
+        shown = [f for f in scene.frames if f.translation is not None and f.rotation is not None]
+        self._draw_axes(shown)
+        self._draw_labels(shown)
+        self._draw_links(shown)
+        self._set(self._warning, '\n\n'.join(f'**Warning:** {text}' for text in scene.warnings))
+        tree = f'Fixed frame: `{scene.fixed_frame}`\n\n' + tree_markdown(scene)
+        self._set(self._tree, tree)
+        self._set(self._echo, echo_markdown(core, scene.fixed_frame, self.selected))
         return scene
 
-    def _draw_frame(self, frame: FrameView) -> None:
-        scene_api = self.server.scene
-        if frame.name not in self._frames:
-            key = f'/tf/f{self._created}'  # frame ids may hold '/', viser's path separator
-            self._created += 1
-            axes = scene_api.add_frame(key, axes_length=AXES_LENGTH, axes_radius=0.01)
-            label = scene_api.add_label(f'{key}/label', frame.name)
-            self._frames[frame.name] = (axes, label)
-        axes, label = self._frames[frame.name]
-        visible = frame.translation is not None and frame.rotation is not None
-        axes.visible = visible
-        if not visible:
-            return
-        axes.position = frame.translation
-        axes.wxyz = _wxyz(frame.rotation)  # type: ignore[arg-type]
-        color = STATIC_COLOR if frame.is_static else DYNAMIC_COLOR
-        axes.origin_color = STALE_COLOR if frame.stale else color
-        label.text = f'{frame.name} (stale)' if frame.stale else frame.name
+    @staticmethod
+    def _set(markdown: Any, content: str) -> None:
+        if markdown.content != content:  # each assignment is a message to every browser
+            markdown.content = content
 
-    def _draw_links(self, scene: SceneView) -> None:
-        where = {f.name: f.translation for f in scene.frames if f.translation is not None}
+    def _draw_axes(self, shown: list[FrameView]) -> None:
+        """All triads in one batched node, all origins (coloured by kind) in one point cloud."""
+        positions = np.array([f.translation for f in shown], dtype=np.float32).reshape(-1, 3)
+        wxyzs = np.array([_wxyz(f.rotation) for f in shown], dtype=np.float32).reshape(-1, 4)  # type: ignore[arg-type]
+        colors = np.array(
+            [
+                STALE_COLOR if f.stale else STATIC_COLOR if f.is_static else DYNAMIC_COLOR
+                for f in shown
+            ],
+            dtype=np.uint8,
+        ).reshape(-1, 3)
+        scene_api = self.server.scene
+        if self._axes is None:
+            self._axes = scene_api.add_batched_axes(
+                '/tf/axes', wxyzs, positions, axes_length=AXES_LENGTH, axes_radius=0.01
+            )
+            self._origins = scene_api.add_point_cloud(
+                '/tf/origins', positions, colors, point_size=0.06, point_shape='circle'
+            )
+            return
+        self._axes.batched_positions = positions
+        self._axes.batched_wxyzs = wxyzs
+        self._origins.points = positions
+        self._origins.colors = colors
+
+    def _draw_labels(self, shown: list[FrameView]) -> None:
+        """
+        One label per frame, moved only when its frame moved more than 1 mm.
+
+        A label is one message per move: at most :data:`LABEL_MOVES_PER_UPDATE` are sent per
+        update (the longest waiting first), so a large moving tree stays cheap.
+        """
+        scene_api = self.server.scene
+        wanted = {f.name for f in shown}
+        for gone in set(self._labels) - wanted:
+            self._labels.pop(gone).remove()
+            self._label_state.pop(gone, None)
+        moves: list[tuple[int, str, tuple[float, float, float], str]] = []
+        for frame in shown:
+            text = f'{frame.name} (stale)' if frame.stale else frame.name
+            place = tuple(round(c, 3) for c in frame.translation)  # type: ignore[union-attr]
+            if frame.name not in self._labels:
+                self._labels[frame.name] = scene_api.add_label(
+                    f'/tf/labels/l{self._created}', text, position=place
+                )
+                self._created += 1
+                self._label_state[frame.name] = (self._tick, place, text)
+                continue
+            sent_tick, sent_place, sent_text = self._label_state[frame.name]
+            if place != sent_place or text != sent_text:
+                moves.append((sent_tick, frame.name, place, text))  # type: ignore[arg-type]
+        moves.sort()
+        for _, name, place, text in moves[:LABEL_MOVES_PER_UPDATE]:
+            label = self._labels[name]
+            sent_tick, sent_place, sent_text = self._label_state[name]
+            if place != sent_place:
+                label.position = place
+            if text != sent_text:
+                label.text = text
+            self._label_state[name] = (self._tick, place, text)
+        self._tick += 1
+
+    def _draw_links(self, shown: list[FrameView]) -> None:
+        where = {f.name: f.translation for f in shown}
         segments = [
             (where[f.name], where[f.parent])
-            for f in scene.frames
-            if f.parent is not None and f.name in where and f.parent in where
+            for f in shown
+            if f.parent is not None and f.parent in where
         ]
         points = np.array(segments, dtype=np.float32).reshape(-1, 2, 3)
         if self._links is None:
