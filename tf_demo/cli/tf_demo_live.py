@@ -115,13 +115,9 @@ def _rate(text: str) -> float:
 
 
 def _port(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        msg = f'not a port number: {text!r}'
-        raise argparse.ArgumentTypeError(msg) from None
+    value = int(text) if text.strip().isdigit() else -1
     if not 0 <= value <= 65535:
-        msg = f'must be in 0..65535, got {text}'
+        msg = f'not a port number (0..65535): {text!r}'
         raise argparse.ArgumentTypeError(msg)
     return value
 
