@@ -251,6 +251,11 @@ def test_the_fixed_urdf_puts_frame_1_one_metre_above_world(spawn: Processes, bro
     choose(browser, 'Frame', 'frame_1')
     wait_for_text(browser, '- Translation: [0.000, 0.000, 1.000]')
     screenshot(browser, 'example_fixed')
+    choose(browser, 'Fixed frame', 'frame_1')  # chosen in the page: world is now 1 m below
+    text = wait_for_text(browser, 'Fixed frame: frame_1')
+    choose(browser, 'Frame', 'world')
+    text = wait_for_text(browser, '- Translation: [0.000, 0.000, -1.000]')
+    assert '`frame_1` → `world`' in text or 'frame_1 → world' in text
 
 
 def test_a_slider_moves_the_joint_for_every_listener(spawn: Processes, browser: Any) -> None:
@@ -269,6 +274,8 @@ def test_a_slider_moves_the_joint_for_every_listener(spawn: Processes, browser: 
     )
     browser.get(url)
     wait_for_text(browser, 'frame_1_to_frame_2', 'frame_2')
+    choose(browser, 'Frame', 'frame_2')  # the page shows frame_2 one metre on, one metre up
+    wait_for_text(browser, '- Translation: [1.000, 0.000, 1.000]')
     screenshot(browser, 'revolute_0')
     before = len(echo.stdout)
     set_number(browser, 'frame_1_to_frame_2', 1.5708)

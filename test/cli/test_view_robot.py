@@ -85,6 +85,18 @@ def test_mesh_files_resolve_relative_package_and_file(
     assert [extents(m.vertices) for m in meshes] == [(0.5, 1.0, 1.5)] * 3
 
 
+def test_collada_meshes_load(tmp_path: Path):
+    """A .dae (the format of most ROS robots' visual meshes) is read through pycollada."""
+    trimesh = pytest.importorskip('trimesh')
+    pytest.importorskip('collada', reason="pycollada comes with the 'view' extra")
+    trimesh.creation.box(extents=(1.0, 2.0, 3.0)).export(tmp_path / 'part.dae')
+    meshes, problems = visual_meshes(
+        [Visual('l', (0, 0, 0), (0, 0, 0), 'mesh', (1, 1, 1), 'part.dae')], tmp_path
+    )
+    assert problems == []
+    assert extents(meshes[0].vertices) == (1.0, 2.0, 3.0)
+
+
 def test_unreadable_meshes_are_named_and_the_rest_is_drawn(tmp_path: Path):
     """Missing, corrupt and unknown-scheme meshes: one line each; the box is still drawn."""
     (tmp_path / 'corrupt.stl').write_bytes(b'solid nothing\n\x00\xff garbage')

@@ -25,6 +25,7 @@ the link where TF says it is, as rviz2's RobotModel display does.
 from __future__ import annotations
 
 from collections.abc import Sequence
+import logging
 from pathlib import Path
 from typing import NamedTuple
 from typing import TYPE_CHECKING
@@ -88,6 +89,7 @@ def _shape_triangles(visual: Visual, base_dir: Path | None) -> Triangles:
     if path.stat().st_size > MAX_MESH_BYTES:
         msg = f'mesh file {path} is larger than {MAX_MESH_BYTES} bytes'
         raise ValueError(msg)
+    logging.getLogger('trimesh').setLevel(logging.ERROR)  # its fallbacks are not our users' news
     vertices, faces = _triangles(trimesh.load(path, force='mesh'))
     if len(faces) == 0:
         msg = f'mesh file {path} holds no triangles trimesh can read'
