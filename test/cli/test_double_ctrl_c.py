@@ -64,7 +64,8 @@ def executable_arguments(tmp_path: Path) -> dict[str, list[str]]:
         'tf_doctor': ['-t', '600'],
         'tf_saver': ['-t', '600', '-o', str(tmp_path / 'saved.yaml')],
         'tf_loader': [str(snapshot)],
-        'tf_demo_live': ['--quiet', '--duration', '600'],
+        'tf_demo_live': ['--quiet', '--duration', '600', '--view-port', '0'],
+        'tf_view': ['--port', '0', '--urdf', urdf],
     }
 
 

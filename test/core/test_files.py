@@ -36,6 +36,7 @@ from tf_demo.core.files import output_path_error
 from tf_demo.core.files import OutputFileError
 from tf_demo.core.files import read_text_file
 from tf_demo.core.files import write_text_atomically
+from tf_demo.core.files import yaml_flow_too_deep
 
 SNAPSHOT = Snapshot(
     transforms=(SnapshotTransform('map', 'odom', (1.0, 2.0, 3.0), (0.0, 0.0, 0.0, 1.0)),)
@@ -209,3 +210,41 @@ def test_reading_a_small_file_allocates_little(tmp_path: Path) -> None:
     finally:
         tracemalloc.stop()
     assert peak < 1024 * 1024, peak
+
+
+@pytest.mark.parametrize(
+    ('text', 'limit', 'line'),
+    [
+        ('[' * 64 + ']' * 64, 64, None),
+        ('[' * 65 + ']' * 65, 64, 1),
+        ('{a: ' * 65 + '1' + '}' * 65, 64, 1),
+        ('- - [' + '[' * 70, 64, 1),
+        ('x:   # [[[[[[\n  ' + '[' * 70, 64, 2),
+        ('a' + '[' * 100, 64, None),  # a plain scalar
+        ('"' + '[' * 100 + '"', 64, None),  # a double-quoted scalar
+        ("'it''s " + '[' * 100 + "'", 64, None),  # '' inside a single-quoted scalar
+        ('"\\"' + '[' * 100 + '"', 64, None),  # an escaped quote
+        ('[' * 3 + ']' * 3 + ', [[[[', 3, 1),  # depth 4 after returning to 0
+    ],
+)
+def test_yaml_flow_nesting_is_measured_before_parsing(text: str, limit: int, line: int | None):
+    """Flow brackets deeper than the limit give their line; scalars and comments do not count."""
+    assert yaml_flow_too_deep(text, limit) == line
+
+
+def test_flow_depth_agrees_with_the_yaml_parser():
+    """For nested flow sequences the scan and PyYAML's own events count the same depth."""
+    import yaml
+
+    for depth in range(1, 40, 7):
+        text = 'k: ' + '[' * depth + '1' + ', [2]' + ']' * depth
+        events = yaml.parse(text, Loader=yaml.SafeLoader)
+        deepest = current = 0
+        for event in events:
+            if isinstance(event, yaml.SequenceStartEvent):
+                current += 1
+                deepest = max(deepest, current)
+            elif isinstance(event, yaml.SequenceEndEvent):
+                current -= 1
+        assert yaml_flow_too_deep(text, deepest) is None
+        assert yaml_flow_too_deep(text, deepest - 1) == 1

@@ -56,6 +56,7 @@ import os
 from tf_demo.core.files import InputFileError
 from tf_demo.core.files import read_text_file
 from tf_demo.core.files import write_text_atomically
+from tf_demo.core.files import yaml_flow_too_deep
 import yaml
 
 SCHEMA_KEY = 'tf_demo_transforms'
@@ -397,6 +398,9 @@ _CLOSING_TOKENS = (yaml.BlockEndToken, yaml.FlowMappingEndToken, yaml.FlowSequen
 
 def _check_nesting(text: str, source: str) -> None:
     """Refuse nesting deeper than :data:`MAX_NESTING` before the (recursive) composer runs."""
+    deep = yaml_flow_too_deep(text, MAX_NESTING)
+    if deep is not None:
+        raise SnapshotError(f'{source}:{deep}: nesting is deeper than {MAX_NESTING} levels')
     depth = 0
     for token in yaml.scan(text, Loader=_LOADER):
         if isinstance(token, _OPENING_TOKENS):

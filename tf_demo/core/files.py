@@ -192,3 +192,62 @@ def write_text_atomically(path: str | os.PathLike[str], text: str) -> None:
             reason = error.strerror or str(error)
             raise OutputFileError(f'{source}: cannot write ({reason})') from None
         raise
+
+
+#: Characters after which a YAML ``[`` or ``{`` opens a flow collection (None: the text's start).
+_FLOW_OPENERS_AFTER = frozenset('[{,:-?')
+
+
+def yaml_flow_too_deep(text: str, limit: int) -> int | None:
+    """
+    Return the 1-based line where YAML flow collections (``[`` ``{``) nest deeper than ``limit``.
+
+    A character scan, run before any YAML parser sees hostile text (PyYAML's scanner reads a
+    whole run of brackets ahead, and since 6.0.4 stops at 1,000 levels with its own words).
+    Quoted scalars and comments are skipped; a bracket counts only where a node can start (at
+    the start, or after ``[ { , : - ?``), so ``a[b`` stays a plain scalar. None when within.
+    """
+    depth = 0
+    line = 1
+    previous: str | None = None
+    quote: str | None = None
+    comment = False
+    index = 0
+    length = len(text)
+    while index < length:
+        char = text[index]
+        index += 1
+        if char == '\n':
+            line += 1
+            comment = False
+            continue
+        if comment:
+            continue
+        if quote is not None:
+            if quote == '"' and char == '\\':
+                index += 1  # an escaped character
+            elif char == quote:
+                if quote == "'" and text.startswith("'", index):
+                    index += 1  # '' is a quote inside a single-quoted scalar
+                else:
+                    quote = None
+                    previous = char
+            continue
+        if char in ' \t\r':
+            if text.startswith('#', index):
+                comment = True
+            continue
+        opens = previous is None or previous in _FLOW_OPENERS_AFTER
+        if char in '[{' and not opens:
+            char = 'a'  # inside a plain scalar: neither this nor what follows opens
+        elif char in '[{':
+            depth += 1
+            if depth > limit:
+                return line
+        elif char in ']}':
+            depth = max(0, depth - 1)
+        elif char in '\'"' and opens:
+            quote = char
+        previous = char
+    return None
+

@@ -28,6 +28,7 @@ from collections.abc import Callable
 from collections.abc import Iterator
 from typing import Protocol
 
+from tf_demo.core.files import yaml_flow_too_deep
 from tf_demo.transport.params_typing import ParamValue
 from tf_demo.transport.params_typing import rcl_scalar
 from tf_demo.transport.params_typing import RuleError
@@ -172,7 +173,14 @@ class LineError(RuleError):
 
 
 def yaml_events(text: str, loader: EventLoader) -> Iterator[yaml.Event]:
-    """Yield the YAML events of ``text``; a syntax error becomes a one-line :class:`LineError`."""
+    """
+    Yield the YAML events of ``text``; a syntax error becomes a one-line :class:`LineError`.
+
+    Flow collections nested deeper than :data:`MAX_YAML_NESTING` are refused before parsing.
+    """
+    deep = yaml_flow_too_deep(text, MAX_YAML_NESTING)
+    if deep is not None:
+        raise too_deep(deep)
     try:
         parser = loader(text)
         try:
