@@ -250,4 +250,3 @@ def yaml_flow_too_deep(text: str, limit: int) -> int | None:
             quote = char
         previous = char
     return None
-
