@@ -55,7 +55,9 @@ setup(
     extras_require={
         'dds': ['cyclonedds==11.0.1'],
         # tf_view's live 3D view in the browser.
-        'view': ['viser>=1.0', 'pycollada'],  # pycollada: trimesh reads .dae meshes with it
+        'view': ['viser>=1.0', 'pycollada'],
+        # tf_demo.bag: rosbag2 recordings (MCAP and SQLite3) without ROS.
+        'bag': ['rosbags>=0.10'],  # pycollada: trimesh reads .dae meshes with it
         'test': [
             'cyclonedds==11.0.1',
             'pytest>=7',

@@ -37,6 +37,7 @@ ALLOWED_INTERNAL_IMPORTS = {
     'transport': {'core', 'msgs', 'transport'},
     'ros': {'core', 'msgs', 'transport', 'ros'},
     'testing': {'core', 'urdf', 'msgs', 'testing'},
+    'bag': {'core', 'msgs', 'bag'},
 }
 
 

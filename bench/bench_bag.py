@@ -1,0 +1,104 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Reading recorded TF: transforms per second from a rosbag2 into a BufferCore.
+
+Writes a bag (MCAP, then SQLite3) of ``--messages`` TFMessages × ``--transforms`` each (a
+REP-105-like set of frames at 100 Hz) with rosbags' writer, then times, in the same run:
+``tf_demo.bag.load_buffer`` (container by rosbags, payloads by our CDR decoder, straight into the
+core) and, as the reference, rosbags' own ``deserialize_cdr`` of the same payloads with nothing
+inserted. Target (issue 14): at least 200,000 transforms/s into the core.
+
+Run: ``.venv/bin/python bench/bench_bag.py``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+
+TARGET = 200_000
+SECOND = 1_000_000_000
+T0 = 1_700_000_000 * SECOND
+
+
+def write(path: Path, storage: str, messages: int, transforms: int) -> None:
+    from rosbags.rosbag2 import StoragePlugin
+    from rosbags.rosbag2 import Writer
+    from rosbags.typesys import get_typestore
+    from rosbags.typesys import Stores
+    from tf_demo.msgs.cdr import TfMessageEncoder
+
+    plugin = StoragePlugin.MCAP if storage == 'mcap' else StoragePlugin.SQLITE3
+    encoder = TfMessageEncoder()
+    store = get_typestore(Stores.ROS2_JAZZY)
+    with Writer(path, version=9, storage_plugin=plugin) as writer:
+        connection = writer.add_connection('/tf', 'tf2_msgs/msg/TFMessage', typestore=store)
+        for k in range(messages):
+            stamp = T0 + k * SECOND // 100
+            angle = k / 100
+            batch = [
+                (f'f{i}' if i else 'odom', f'f{i + 1}', (0.1 * i, math.cos(angle), 0.0),
+                 (0.0, 0.0, math.sin(angle / 2), math.cos(angle / 2)))
+                for i in range(transforms)
+            ]  # fmt: skip
+            sec, nanosec = divmod(stamp, SECOND)
+            writer.write(connection, stamp, encoder.encode(batch, sec, nanosec))
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
+    parser.add_argument('--messages', type=int, default=4000)
+    parser.add_argument('--transforms', type=int, default=50)
+    options = parser.parse_args(argv)
+    from rosbags.rosbag2 import Reader
+    from rosbags.typesys import get_typestore
+    from rosbags.typesys import Stores
+    from tf_demo.bag import load_buffer
+
+    store = get_typestore(Stores.ROS2_JAZZY)
+    total = options.messages * options.transforms
+    print(f'{options.messages} TFMessages x {options.transforms} transforms = {total} transforms')
+    with tempfile.TemporaryDirectory() as folder:
+        for storage in ('mcap', 'sqlite3'):
+            path = Path(folder) / storage
+            write(path, storage, options.messages, options.transforms)
+            start = time.perf_counter()
+            core = load_buffer(path)
+            ours = time.perf_counter() - start
+            assert core.frame_exists(f'f{options.transforms}')
+            start = time.perf_counter()
+            with Reader(path) as reader:
+                for connection, _, data in reader.messages():
+                    store.deserialize_cdr(data, connection.msgtype)
+            theirs = time.perf_counter() - start
+            rate = total / ours
+            print(
+                f'  {storage:8s} load_buffer {rate:10,.0f} transforms/s '
+                f'(target >= {TARGET:,}: {"ok" if rate >= TARGET else "MISSED"}); '
+                f"rosbags' deserialize_cdr alone {total / theirs:10,.0f}/s; "
+                f'ours/theirs time {ours / theirs:.2f}'
+            )
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

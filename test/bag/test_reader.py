@@ -1,0 +1,191 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""tf_demo.bag's reader on bags written by rosbags (MCAP and SQLite3), good and hostile."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+from tf_demo.bag import BagError
+from tf_demo.bag import load_buffer
+from tf_demo.bag import open_tf_bag
+from tf_demo.core.exceptions import ExtrapolationException
+from tf_demo.msgs.cdr import serialize
+from tf_demo.msgs.geometry_msgs import TransformStamped
+from tf_demo.msgs.tf2_msgs import TFMessage
+
+rosbag2 = pytest.importorskip('rosbags.rosbag2', reason="tf_demo.bag needs the 'bag' extra")
+typesys = pytest.importorskip('rosbags.typesys')
+
+SECOND = 1_000_000_000
+T0 = 1_700_000_000 * SECOND
+RADIUS = 1.0
+STORAGES = {'mcap': rosbag2.StoragePlugin.MCAP, 'sqlite3': rosbag2.StoragePlugin.SQLITE3}
+
+
+def transform(parent: str, child: str, stamp_ns: int, xyz, yaw: float = 0.0) -> TransformStamped:
+    message = TransformStamped()
+    message.header.stamp.sec, message.header.stamp.nanosec = divmod(stamp_ns, SECOND)
+    message.header.frame_id = parent
+    message.child_frame_id = child
+    message.transform.translation.x, message.transform.translation.y = xyz[0], xyz[1]
+    message.transform.translation.z = xyz[2]
+    message.transform.rotation.z = math.sin(yaw / 2)
+    message.transform.rotation.w = math.cos(yaw / 2)
+    return message
+
+
+def tf_bytes(*transforms: TransformStamped) -> bytes:
+    message = TFMessage()
+    message.transforms = list(transforms)
+    return serialize(message)
+
+
+def circle(k: int) -> TransformStamped:
+    """dynamic_tf_pub's odom -> base_link at sample k (20 Hz): x = r cos t, y = r sin t, yaw t."""
+    t = k / 20
+    return transform(
+        'odom',
+        'base_link',
+        T0 + k * SECOND // 20,
+        (RADIUS * math.cos(t), RADIUS * math.sin(t), 0.0),
+        t,
+    )
+
+
+def write_bag(
+    path: Path, storage: str, messages: list[tuple[str, int, bytes]], **connection
+) -> Path:
+    """Write ``(topic, bag_time_ns, cdr)`` messages with rosbags' own writer."""
+    store = typesys.get_typestore(typesys.Stores.ROS2_JAZZY)
+    with rosbag2.Writer(path, version=9, storage_plugin=STORAGES[storage]) as writer:
+        connections = {}
+        for topic, bag_time, data in messages:
+            if topic not in connections:
+                msgtype = connection.get('msgtype', 'tf2_msgs/msg/TFMessage')
+                connections[topic] = writer.add_connection(
+                    topic, msgtype, typestore=store,
+                    serialization_format=connection.get('serialization_format', 'cdr'),
+                )  # fmt: skip
+            writer.write(connections[topic], bag_time, data)
+    return path
+
+
+def circle_bag(path: Path, storage: str, samples: int = 41) -> Path:
+    """Two seconds of the circle on /tf, the static camera recorded late on /tf_static."""
+    messages = [('/tf', T0 + k * SECOND // 20, tf_bytes(circle(k))) for k in range(samples)]
+    camera = transform('base_link', 'camera_link', T0 + SECOND, (0.5, 0.0, 0.2))
+    messages.insert(20, ('/tf_static', T0 + SECOND, tf_bytes(camera)))
+    return write_bag(path, storage, messages)
+
+
+@pytest.mark.parametrize('storage', sorted(STORAGES))
+def test_the_circle_reads_back_exactly(tmp_path: Path, storage: str):
+    """Every recorded sample is looked up exactly; the static one counts from the bag's start."""
+    core = load_buffer(circle_bag(tmp_path / 'circle', storage))
+    for k in (0, 7, 40):
+        expected = circle(k).transform
+        got = core.lookup_transform('odom', 'base_link', T0 + k * SECOND // 20)
+        assert got.translation == (expected.translation.x, expected.translation.y, 0.0)
+        assert math.isclose(got.rotation[2], expected.rotation.z, abs_tol=1e-15)
+    early = core.lookup_transform('odom', 'camera_link', T0)  # before /tf_static was recorded
+    assert early.translation[2] == 0.2
+    with pytest.raises(ExtrapolationException):
+        core.lookup_transform('odom', 'base_link', T0 + 3 * SECOND)  # the publisher stopped
+
+
+@pytest.mark.parametrize('storage', sorted(STORAGES))
+def test_records_stream_in_order_with_their_topic(tmp_path: Path, storage: str):
+    path = circle_bag(tmp_path / 'circle', storage)
+    single_file = next(p for p in path.iterdir() if p.suffix in {'.mcap', '.db3'})
+    for where in (path, single_file):  # the directory, or the storage file alone
+        with open_tf_bag(where) as bag:
+            assert sorted(bag.topics) == ['/tf', '/tf_static']
+            assert (bag.start_ns, bag.end_ns) == (T0, T0 + 2 * SECOND)
+            records = list(bag.records())
+        assert [r.bag_time_ns for r in records] == sorted(r.bag_time_ns for r in records)
+        assert len(records) == 42
+        static = [r for r in records if r.is_static]
+        assert [(t[0], t[1]) for r in static for t in r.transforms] == [
+            ('base_link', 'camera_link')
+        ]
+
+
+def test_topic_names_can_be_chosen(tmp_path: Path):
+    path = write_bag(tmp_path / 'ns', 'mcap', [('/robot1/tf', T0, tf_bytes(circle(0)))])
+    with pytest.raises(
+        BagError, match=r'no /tf or /tf_static topic in the bag \(topics: /robot1/tf\)'
+    ):
+        open_tf_bag(path)
+    core = load_buffer(path, tf_topic='/robot1/tf')
+    assert core.frame_exists('base_link')
+
+
+def test_missing_and_not_a_bag(tmp_path: Path):
+    with pytest.raises(BagError, match=r'nowhere: no such bag'):
+        open_tf_bag(tmp_path / 'nowhere')
+    (tmp_path / 'empty').mkdir()
+    with pytest.raises(BagError, match=r'empty: not a readable rosbag2: '):
+        open_tf_bag(tmp_path / 'empty')
+    garbage = tmp_path / 'garbage.mcap'
+    garbage.write_bytes(b'\x89NOT A BAG' + bytes(200))
+    with pytest.raises(BagError, match=r'garbage\.mcap: not a readable rosbag2: '):
+        open_tf_bag(garbage)
+
+
+def test_wrong_type_and_serialization_are_named(tmp_path: Path):
+    path = write_bag(
+        tmp_path / 'typed',
+        'mcap',
+        [('/tf', T0, b'\x00\x01\x00\x00')],
+        msgtype='std_msgs/msg/String',
+    )
+    with pytest.raises(
+        BagError, match=r'/tf holds std_msgs/msg/String, not tf2_msgs/msg/TFMessage'
+    ):
+        open_tf_bag(path)
+
+
+def test_an_undecodable_message_is_named_after_what_came_before(tmp_path: Path):
+    """Good, good, garbage: two records arrive, then one line with the bag time."""
+    messages = [('/tf', T0 + k, tf_bytes(circle(k))) for k in range(2)]
+    messages.append(('/tf', T0 + 5, b'\x00\x01\x00\x00\xff\xff\xff\x7f'))
+    path = write_bag(tmp_path / 'bad', 'sqlite3', messages)
+    with open_tf_bag(path) as bag:
+        records = bag.records()
+        assert next(records).bag_time_ns == T0
+        assert next(records).bag_time_ns == T0 + 1
+        with pytest.raises(
+            BagError,
+            match=r'message on /tf at bag time 1700000000\.000000005 s is not a TFMessage',
+        ):
+            next(records)
+
+
+def test_a_truncated_mcap_is_refused_in_one_line(tmp_path: Path):
+    """Half an MCAP file: refused at open (its summary is gone) or where the damage starts."""
+    path = circle_bag(tmp_path / 'circle', 'mcap', samples=400)
+    mcap = next(p for p in path.iterdir() if p.suffix == '.mcap')
+    data = mcap.read_bytes()
+    mcap.write_bytes(data[: len(data) // 2])
+
+    def read_all() -> int:
+        with open_tf_bag(mcap) as bag:
+            return len(list(bag.records()))
+
+    with pytest.raises(BagError, match=r'circle\.mcap: (not a readable rosbag2|damaged after)'):
+        read_all()

@@ -1,0 +1,203 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Reading TF out of a rosbag2: streamed in recording order, decoded straight into tuples.
+
+A bag is a directory with ``metadata.yaml`` or a single ``.mcap`` / ``.db3`` file, as ROS 2
+Jazzy's rosbag2 (MCAP by default) and Humble's (SQLite3) write them. Every problem is one
+:class:`BagError` line naming the file and what is wrong: no such bag, not a bag, a damaged
+container, no TF topic, a serialization other than ``cdr``, an undecodable message (with its bag
+time). :meth:`TfBag.records` is a generator, so a long bag is read in bounded memory.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from types import TracebackType
+from typing import Any
+
+from tf_demo.core.buffer_core import BufferCore
+from tf_demo.msgs.cdr import decode_tf_message_transforms
+from tf_demo.msgs.cdr import TransformTuple
+
+TF_TYPE = 'tf2_msgs/msg/TFMessage'
+DEFAULT_TF_TOPIC = '/tf'
+DEFAULT_STATIC_TOPIC = '/tf_static'
+#: A loaded buffer keeps the whole recording (plus this much) unless told otherwise.
+_CACHE_MARGIN_NS = 10_000_000_000
+
+
+class BagError(ValueError):
+    """A bag that cannot be read (the message names the file and the problem)."""
+
+
+@dataclass(frozen=True)
+class BagRecord:
+    """One recorded TFMessage: when the bag received it, its transforms, which topic."""
+
+    bag_time_ns: int
+    transforms: list[TransformTuple]
+    is_static: bool
+
+
+class TfBag:
+    """An open bag's TF connections (use :func:`open_tf_bag`; a context manager)."""
+
+    def __init__(self, path: Path, reader: Any, connections: list[Any], static_topic: str) -> None:
+        self.path = path
+        self._reader = reader
+        self._connections = connections
+        self._static_topic = static_topic
+
+    @property
+    def start_ns(self) -> int:
+        """The bag's first receive time."""
+        return int(self._reader.start_time)
+
+    @property
+    def end_ns(self) -> int:
+        """The bag's last receive time."""
+        return max(int(self._reader.end_time) - 1, self.start_ns)  # rosbags: one past the last
+
+    @property
+    def topics(self) -> list[str]:
+        """The TF topics found (their order in the bag)."""
+        return [connection.topic for connection in self._connections]
+
+    def records(self) -> Iterator[BagRecord]:
+        """
+        Yield every TF message in recording order.
+
+        :raises BagError: at the first damaged chunk or undecodable message, after yielding
+            everything before it.
+        """
+        messages = self._reader.messages(connections=self._connections)
+        bag_time = self.start_ns
+        while True:
+            try:
+                connection, bag_time, data = next(messages)
+            except StopIteration:
+                return
+            except Exception as error:  # rosbags' reader errors, zstd, sqlite, struct ...
+                msg = f'{self.path}: damaged after bag time {_seconds(bag_time)} s: {error}'
+                raise BagError(msg) from None
+            try:
+                transforms = decode_tf_message_transforms(data)
+            except Exception as error:
+                msg = (
+                    f'{self.path}: message on {connection.topic} at bag time '
+                    f'{_seconds(bag_time)} s is not a TFMessage: {error}'
+                )
+                raise BagError(msg) from None
+            yield BagRecord(int(bag_time), transforms, connection.topic == self._static_topic)
+
+    def close(self) -> None:
+        """Close the bag's files."""
+        self._reader.close()
+
+    def __enter__(self) -> TfBag:
+        return self
+
+    def __exit__(
+        self,
+        kind: type[BaseException] | None,
+        value: BaseException | None,
+        traceback: TracebackType | None,
+    ) -> None:
+        self.close()
+
+
+def open_tf_bag(
+    path: str | Path, tf_topic: str = DEFAULT_TF_TOPIC, static_topic: str = DEFAULT_STATIC_TOPIC
+) -> TfBag:
+    """
+    Open the bag at ``path`` for its ``tf_topic`` and ``static_topic`` messages.
+
+    :raises BagError: naming ``path``: missing, not a rosbag2, no TF topic, or not ``cdr``.
+    """
+    try:
+        from rosbags.rosbag2 import Reader
+    except ImportError as error:
+        msg = f"reading bags needs the 'bag' extra (pip install 'tf_demo[bag]'): {error}"
+        raise BagError(msg) from None
+    bag = Path(path)
+    if not bag.exists():
+        msg = f'{bag}: no such bag (a directory with metadata.yaml, or a .mcap or .db3 file)'
+        raise BagError(msg)
+    try:
+        reader = Reader(bag)
+        reader.open()
+    except Exception as error:  # rosbags raises its own errors, and OSError, sqlite3 ...
+        msg = f'{bag}: not a readable rosbag2: {error}'
+        raise BagError(msg) from None
+    wanted = (tf_topic, static_topic)
+    connections = [c for c in reader.connections if c.topic in wanted]
+    problem = None
+    if not connections:
+        found = ', '.join(sorted({c.topic for c in reader.connections})) or 'none'
+        problem = f'no {tf_topic} or {static_topic} topic in the bag (topics: {found})'
+    for connection in connections:
+        formats = getattr(connection.ext, 'serialization_format', 'cdr')
+        if connection.msgtype != TF_TYPE:
+            problem = f'{connection.topic} holds {connection.msgtype}, not {TF_TYPE}'
+        elif formats != 'cdr':
+            problem = f"{connection.topic} is serialized as '{formats}' (only 'cdr' is read)"
+    if problem is not None:
+        reader.close()
+        raise BagError(f'{bag}: {problem}')
+    return TfBag(bag, reader, connections, static_topic)
+
+
+def load_buffer(
+    path: str | Path,
+    cache_time_ns: int | None = None,
+    tf_topic: str = DEFAULT_TF_TOPIC,
+    static_topic: str = DEFAULT_STATIC_TOPIC,
+) -> BufferCore:
+    """
+    Return a :class:`BufferCore` holding every transform of the bag.
+
+    Static transforms count from the bag's start whenever they were recorded (tf2 treats them as
+    valid at all times). ``cache_time_ns`` defaults to the whole recording. Transforms tf2
+    refuses (NaN, an empty frame id) are skipped, as a listener skips them.
+
+    :raises BagError: as :func:`open_tf_bag` and :meth:`TfBag.records`.
+    """
+    with open_tf_bag(path, tf_topic, static_topic) as bag:
+        span = bag.end_ns - bag.start_ns + _CACHE_MARGIN_NS
+        core = BufferCore(cache_time_ns if cache_time_ns is not None else span, log=_quiet)
+        insert = core.set_transform
+        authority = f'bag {bag.path.name}'
+        for record in bag.records():
+            for parent, child, stamp_ns, translation, rotation in record.transforms:
+                try:
+                    insert(parent, child, stamp_ns, translation, rotation, authority,
+                           record.is_static)  # fmt: skip
+                except Exception:
+                    continue
+    return core
+
+
+def _seconds(stamp_ns: int) -> str:
+    """Return a bag time as exact seconds (``sec.nanosec``)."""
+    sec, nanosec = divmod(int(stamp_ns), 1_000_000_000)
+    return f'{sec}.{nanosec:09d}'
+
+
+def _quiet(level: int, text: str) -> None:
+    """Drop the loaded buffer's log lines: a recording's old data is not news."""
+    del level, text
