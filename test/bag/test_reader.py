@@ -24,35 +24,17 @@ from tf_demo.bag import BagError
 from tf_demo.bag import load_buffer
 from tf_demo.bag import open_tf_bag
 from tf_demo.core.exceptions import ExtrapolationException
-from tf_demo.msgs.cdr import serialize
 from tf_demo.msgs.geometry_msgs import TransformStamped
-from tf_demo.msgs.tf2_msgs import TFMessage
+from tf_demo.testing.bags import STORAGES
+from tf_demo.testing.bags import tf_bytes
+from tf_demo.testing.bags import transform
+from tf_demo.testing.bags import write_bag
 
 rosbag2 = pytest.importorskip('rosbags.rosbag2', reason="tf_demo.bag needs the 'bag' extra")
-typesys = pytest.importorskip('rosbags.typesys')
 
 SECOND = 1_000_000_000
 T0 = 1_700_000_000 * SECOND
 RADIUS = 1.0
-STORAGES = {'mcap': rosbag2.StoragePlugin.MCAP, 'sqlite3': rosbag2.StoragePlugin.SQLITE3}
-
-
-def transform(parent: str, child: str, stamp_ns: int, xyz, yaw: float = 0.0) -> TransformStamped:
-    message = TransformStamped()
-    message.header.stamp.sec, message.header.stamp.nanosec = divmod(stamp_ns, SECOND)
-    message.header.frame_id = parent
-    message.child_frame_id = child
-    message.transform.translation.x, message.transform.translation.y = xyz[0], xyz[1]
-    message.transform.translation.z = xyz[2]
-    message.transform.rotation.z = math.sin(yaw / 2)
-    message.transform.rotation.w = math.cos(yaw / 2)
-    return message
-
-
-def tf_bytes(*transforms: TransformStamped) -> bytes:
-    message = TFMessage()
-    message.transforms = list(transforms)
-    return serialize(message)
 
 
 def circle(k: int) -> TransformStamped:
@@ -67,24 +49,6 @@ def circle(k: int) -> TransformStamped:
     )
 
 
-def write_bag(
-    path: Path, storage: str, messages: list[tuple[str, int, bytes]], **connection
-) -> Path:
-    """Write ``(topic, bag_time_ns, cdr)`` messages with rosbags' own writer."""
-    store = typesys.get_typestore(typesys.Stores.ROS2_JAZZY)
-    with rosbag2.Writer(path, version=9, storage_plugin=STORAGES[storage]) as writer:
-        connections = {}
-        for topic, bag_time, data in messages:
-            if topic not in connections:
-                msgtype = connection.get('msgtype', 'tf2_msgs/msg/TFMessage')
-                connections[topic] = writer.add_connection(
-                    topic, msgtype, typestore=store,
-                    serialization_format=connection.get('serialization_format', 'cdr'),
-                )  # fmt: skip
-            writer.write(connections[topic], bag_time, data)
-    return path
-
-
 def circle_bag(path: Path, storage: str, samples: int = 41) -> Path:
     """Two seconds of the circle on /tf, the static camera recorded late on /tf_static."""
     messages = [('/tf', T0 + k * SECOND // 20, tf_bytes(circle(k))) for k in range(samples)]
@@ -93,7 +57,7 @@ def circle_bag(path: Path, storage: str, samples: int = 41) -> Path:
     return write_bag(path, storage, messages)
 
 
-@pytest.mark.parametrize('storage', sorted(STORAGES))
+@pytest.mark.parametrize('storage', STORAGES)
 def test_the_circle_reads_back_exactly(tmp_path: Path, storage: str):
     """Every recorded sample is looked up exactly; the static one counts from the bag's start."""
     core = load_buffer(circle_bag(tmp_path / 'circle', storage))
@@ -108,7 +72,7 @@ def test_the_circle_reads_back_exactly(tmp_path: Path, storage: str):
         core.lookup_transform('odom', 'base_link', T0 + 3 * SECOND)  # the publisher stopped
 
 
-@pytest.mark.parametrize('storage', sorted(STORAGES))
+@pytest.mark.parametrize('storage', STORAGES)
 def test_records_stream_in_order_with_their_topic(tmp_path: Path, storage: str):
     path = circle_bag(tmp_path / 'circle', storage)
     single_file = next(p for p in path.iterdir() if p.suffix in {'.mcap', '.db3'})

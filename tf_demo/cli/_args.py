@@ -217,12 +217,16 @@ class EchoArgs:
     precision: int = 3
     limit: int | None = None
     json: bool = False
+    #: ``--bag PATH``: echo from a rosbag2 recording instead of listening.
+    bag: str | None = None
+    #: ``--at T``: one instant of the bag (bag seconds from its start, or absolute seconds).
+    at_s: float | None = None
     exit_code: int = 0
     error: str = ''
     show_usage: bool = False
 
 
-ECHO_EXTRA_FLAGS = ('-p', '--precision', '--limit', '--json')
+ECHO_EXTRA_FLAGS = ('-p', '--precision', '--limit', '--json', '--bag', '--at')
 MAX_PRECISION = 17
 MAX_COUNT = 10**18
 """The largest ``--limit`` a tool takes (a count of reports or blocks)."""
@@ -243,6 +247,21 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
         token = args[index]
         if token == '--json':
             result.json = True
+        elif token in ('--bag', '--at'):
+            if index == len(args) - 1:
+                result.error = f'{token} needs a value'
+                result.exit_code = 2
+                return result
+            index += 1
+            if token == '--bag':
+                result.bag = args[index]
+            else:
+                at = c_strtod(args[index])
+                if at is None or at.length != len(args[index]) or not math.isfinite(at.value):
+                    result.error = f'--at needs a number of seconds, got {_shown(args[index])}'
+                    result.exit_code = 2
+                    return result
+                result.at_s = at.value
         elif token in ('-p', '--precision', '--limit'):
             if index == len(args) - 1:
                 result.error = f'{token} needs a whole number'
@@ -274,6 +293,9 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
     if len(positional) not in (2, 3):
         result.show_usage = True
         result.exit_code = 1
+        return result
+    if result.at_s is not None and result.bag is None:
+        result.error, result.exit_code = '--at needs --bag PATH (an instant of a recording)', 2
         return result
     result.source_frame, result.target_frame = positional[0], positional[1]
     if len(positional) == 3:

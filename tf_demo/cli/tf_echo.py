@@ -24,6 +24,12 @@ that is not a number, 3 for a number with trailing characters.
 
 Additions, off by default: ``-p/--precision N`` (decimals), ``--limit N`` (exit 0 after N
 blocks) and ``--json`` (one JSON object per line). ``--ros-args`` is accepted.
+
+``--bag PATH`` echoes a rosbag2 recording instead of listening (the ``bag`` extra; no ROS): the
+same blocks at bag times from the recording's start to its end, ``echo_rate`` blocks per second of
+bag time, each the transform at that instant (interpolated as tf2 does); before the data arrives,
+tf2_echo's failure block with tf2's error. ``--at T`` prints one block, at ``T`` seconds from
+the bag's start (or at absolute time ``T`` when ``T`` is a time inside the recording).
 """
 
 from __future__ import annotations
@@ -40,6 +46,8 @@ from tf_demo.cli.formatting import format_echo_failure_json
 from tf_demo.cli.formatting import format_echo_json
 from tf_demo.cli.formatting import format_echo_transform
 from tf_demo.cli.formatting import format_echo_waiting
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 from tf_demo.msgs.convert import TransformStampedLike
 from tf_demo.transport.ros_args import split_ros_args
 
@@ -58,23 +66,21 @@ def _print_transform(options: EchoArgs, transform: TransformStampedLike) -> None
     q = transform.transform.rotation
     translation = (float(t.x), float(t.y), float(t.z))
     rotation = (float(q.x), float(q.y), float(q.z), float(q.w))
+    _print_block(options, int(stamp.sec), int(stamp.nanosec), translation, rotation)
+
+
+def _print_block(
+    options: EchoArgs, sec: int, nanosec: int, translation: Vec3, rotation: Quat
+) -> None:
+    """Print one transform as tf2_echo's block (or one JSON line with ``--json``)."""
     if options.json:
         _write(
             format_echo_json(
-                options.source_frame,
-                options.target_frame,
-                int(stamp.sec),
-                int(stamp.nanosec),
-                translation,
-                rotation,
+                options.source_frame, options.target_frame, sec, nanosec, translation, rotation
             )
         )
     else:
-        _write(
-            format_echo_transform(
-                int(stamp.sec), int(stamp.nanosec), translation, rotation, options.precision
-            )
-        )
+        _write(format_echo_transform(sec, nanosec, translation, rotation, options.precision))
 
 
 def _echo(options: EchoArgs) -> int:
@@ -127,6 +133,48 @@ def _echo(options: EchoArgs) -> int:
     return 0
 
 
+def _bag_instants(options: EchoArgs, start_ns: int, end_ns: int) -> range:
+    """Return the bag times to echo: ``--at`` (relative or absolute), else every 1/rate."""
+    if options.at_s is not None:
+        at_ns = round(options.at_s * 1e9)
+        instant = at_ns if start_ns <= at_ns <= end_ns else start_ns + at_ns
+        return range(instant, instant + 1)
+    return range(start_ns, end_ns + 1, max(1, round(1e9 / options.rate_hz)))
+
+
+def _echo_bag(options: EchoArgs) -> int:
+    from tf_demo.bag import BagError
+    from tf_demo.bag import load_buffer
+    from tf_demo.bag import open_tf_bag
+    from tf_demo.core.exceptions import TransformException
+
+    assert options.bag is not None
+    try:
+        with open_tf_bag(options.bag) as bag:
+            start_ns, end_ns = bag.start_ns, bag.end_ns
+        core = load_buffer(options.bag)
+    except BagError as error:
+        print(f'{TOOL}: {error}', file=sys.stderr, flush=True)
+        return 1
+    printed = 0
+    for instant in _bag_instants(options, start_ns, end_ns):
+        try:
+            result = core.lookup_transform(options.source_frame, options.target_frame, instant)
+        except TransformException as error:
+            now_s = instant / 1e9
+            if options.json:
+                _write(format_echo_failure_json(now_s, str(error), core.frame_ids()))
+            else:
+                _write(format_echo_failure(now_s, str(error), core.all_frames_as_string()))
+            continue
+        sec, nanosec = divmod(result.stamp_ns, 1_000_000_000)
+        _print_block(options, sec, nanosec, result.translation, result.rotation)
+        printed += 1
+        if options.limit is not None and printed >= options.limit:
+            break
+    return 0
+
+
 def main(args: list[str] | None = None) -> int:
     """Run tf_echo with ``args`` (default: ``sys.argv[1:]``)."""
     tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
@@ -137,6 +185,8 @@ def main(args: list[str] | None = None) -> int:
     if options.error:
         print(options.error, file=sys.stderr, flush=True)
         return options.exit_code
+    if options.bag is not None:
+        return _echo_bag(options)
     return run_tool(TOOL, ros_args, lambda: _echo(options))
 
 
