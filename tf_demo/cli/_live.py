@@ -203,13 +203,15 @@ def tool_main(
     *,
     from_snapshot: Callable[[argparse.Namespace, Snapshot], int] | None = None,
     bad_snapshot: int = 1,
+    from_bag: Callable[[argparse.Namespace], int] | None = None,
 ) -> int:
     """
     Run a tool with an argparse command line: ``args`` (default: ``sys.argv[1:]``) to exit code.
 
     ``--ros-args`` sections are split off and the rest parsed by ``parser``; options that
     ``options_error`` refuses print one line and give 2. With ``--snapshot FILE`` (a tool with
-    ``from_snapshot``) the file is read and handed to it instead of listening; a bad file (or a
+    ``from_snapshot``) the file is read and handed to it instead of listening; with ``--bag
+    PATH`` (a tool with ``from_bag``) that runs on the recording; a bad file or bag (or a
     :class:`ToolError`) prints one line and gives ``bad_snapshot``. Else ``live`` runs with
     :func:`run_tool`.
     """
@@ -223,6 +225,14 @@ def tool_main(
         try:
             return from_snapshot(options, read_snapshot(options.snapshot))
         except (SnapshotError, ToolError) as error:
+            print_error(tool, str(error))
+            return bad_snapshot
+    if from_bag is not None and options.bag is not None:
+        from tf_demo.bag import BagError
+
+        try:
+            return from_bag(options)
+        except (BagError, ToolError) as error:
             print_error(tool, str(error))
             return bad_snapshot
     return run_tool(tool, ros_args, lambda: live(options))

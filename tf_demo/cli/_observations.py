@@ -78,6 +78,30 @@ def observations_from_snapshot(snapshot: Snapshot) -> list[Observation]:
     ]
 
 
+def observations_from_bag(
+    path: str, tf_topic: str = TF_TOPIC, static_topic: str = TF_STATIC_TOPIC
+) -> tuple[list[Observation], int, int]:
+    """
+    Read a rosbag2's TF messages as observations received at their bag times.
+
+    :returns: the observations (topics named ``/tf`` and ``/tf_static`` whatever they were
+        recorded as), the bag's start and its end (receive times, ns).
+    :raises tf_demo.bag.BagError: for a bag that cannot be read (one line naming it).
+    """
+    from tf_demo.bag import open_tf_bag
+
+    with open_tf_bag(path, tf_topic, static_topic) as bag:
+        observations = [
+            Observation(
+                TF_STATIC_TOPIC if record.is_static else TF_TOPIC,
+                record.bag_time_ns,
+                tuple(ObservedTransform(*transform) for transform in record.transforms),
+            )
+            for record in bag.records()
+        ]
+        return observations, bag.start_ns, bag.end_ns
+
+
 def add_observation(
     core: BufferCore, observation: Observation, authority: str = RECORDER_AUTHORITY
 ) -> None:

@@ -19,6 +19,7 @@ Usage::
 
     tf_doctor [-t SECONDS] [--frames A B ...] [--json]
     tf_doctor --snapshot FILE [--frames A B ...] [--json]
+    tf_doctor --bag PATH [--frames A B ...] [--json]
 
 It reports frames that do not exist (with close matches), disconnected trees (each island and the
 likely missing link, such as odom→base_link), frames with two parents or publishers fighting, a
@@ -50,6 +51,7 @@ from tf_demo.cli._live import listen
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import observations_from_bag
 from tf_demo.cli._observations import observations_from_snapshot
 from tf_demo.cli._snapshot import Snapshot
 
@@ -76,6 +78,9 @@ def build_parser() -> argparse.ArgumentParser:
         '--frames', nargs='+', default=[], metavar='FRAME', help='frames you need to use'
     )
     parser.add_argument('--snapshot', metavar='FILE', help='diagnose a tf_saver file instead')
+    parser.add_argument(
+        '--bag', metavar='PATH', help='diagnose a rosbag2 recording instead (timing checks too)'
+    )
     parser.add_argument('--json', action='store_true', help='print one JSON object')
     return parser
 
@@ -233,6 +238,14 @@ def _report_snapshot(options: argparse.Namespace, snapshot: Snapshot) -> int:
     )
 
 
+def _report_bag(options: argparse.Namespace) -> int:
+    """Diagnose the ``--bag`` recording: every check, timing included, over the bag's span."""
+    observations, start_ns, end_ns = observations_from_bag(options.bag)
+    return _report(
+        options, observations, options.bag, timing=True, listen_ns=max(end_ns - start_ns, 1)
+    )
+
+
 def main(args: list[str] | None = None) -> int:
     """Run tf_doctor with ``args`` (default: ``sys.argv[1:]``)."""
     return tool_main(
@@ -243,6 +256,7 @@ def main(args: list[str] | None = None) -> int:
         live=_listen_and_report,
         from_snapshot=_report_snapshot,
         bad_snapshot=2,
+        from_bag=_report_bag,
     )
 
 

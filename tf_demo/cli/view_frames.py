@@ -38,6 +38,7 @@ from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
 from tf_demo.cli._observations import buffer_from_observations
+from tf_demo.cli._observations import observations_from_bag
 from tf_demo.cli._snapshot import frames_yaml_data
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.cli.formatting import generate_dot
@@ -67,6 +68,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument(
         '--snapshot', metavar='FILE', help='Draw a tf_saver snapshot file instead of listening'
+    )
+    parser.add_argument(
+        '--bag', metavar='PATH', help='Draw the tree of a rosbag2 recording instead of listening'
     )
     return parser
 
@@ -160,10 +164,26 @@ def _draw_snapshot(options: argparse.Namespace, snapshot: Snapshot) -> int:
     )
 
 
+def _draw_bag(options: argparse.Namespace) -> int:
+    """Draw the ``--bag`` recording's tree as it stands at the bag's end (rates from the bag)."""
+    observations, start_ns, end_ns = observations_from_bag(
+        options.bag, options.tf_topic, options.tf_static_topic
+    )
+    core = buffer_from_observations(observations, cache_time_ns=end_ns - start_ns + 10**10)
+    data = yaml.safe_load(core.all_frames_as_yaml(end_ns))
+    return write_graph(_StderrLogger(), data, divmod(end_ns, 1_000_000_000), options.output)
+
+
 def main(args: list[str] | None = None) -> int:
     """Run view_frames with ``args`` (default: ``sys.argv[1:]``)."""
     return tool_main(
-        TOOL, args, build_parser(), options_error, _listen_and_draw, from_snapshot=_draw_snapshot
+        TOOL,
+        args,
+        build_parser(),
+        options_error,
+        _listen_and_draw,
+        from_snapshot=_draw_snapshot,
+        from_bag=_draw_bag,
     )
 
 
