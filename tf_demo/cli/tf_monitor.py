@@ -41,6 +41,7 @@ from tf_demo.cli._live import run_tool
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._observations import add_observation
 from tf_demo.cli._observations import Observation
+from tf_demo.cli._observations import observations_from_bag
 from tf_demo.cli._observations import quiet_log
 from tf_demo.cli.formatting import format_echo_waiting
 from tf_demo.cli.formatting import format_monitor_broadcasters
@@ -165,12 +166,72 @@ def _monitor(options: argparse.Namespace) -> int:
         node.destroy_node()
 
 
+def _monitor_bag(options: argparse.Namespace) -> int:
+    """
+    tf2_monitor over a rosbag2 recording: the same reports, at the same intervals of bag time.
+
+    Messages count as received at their bag times, so rates and delays are the recording's; a
+    report is printed every ``--interval`` seconds of bag time and one at the end.
+    """
+    observations, start_ns, end_ns = observations_from_bag(options.bag)
+    stats = DelayStats()
+    core = BufferCore(end_ns - start_ns + 10**10, log=quiet_log)
+    frames: list[str] = options.frames
+    chain: list[str] | None = None
+    avg_diff = max_diff = 0.0
+    tick_ns = round(TICK_S * 1e9)
+    report_ns = round(options.interval * 1e9)
+    print(
+        f'Gathering data on {frames[0]} -> {frames[1]} for 10 seconds...'
+        if frames
+        else 'Gathering data on all frames for 10 seconds...',
+        flush=True,
+    )
+    reports = 0
+    next_tick, next_report = start_ns + tick_ns, start_ns + report_ns
+
+    def tick(now_ns: int) -> None:
+        nonlocal avg_diff, max_diff, chain
+        if not frames:
+            return
+        try:
+            found = core.lookup_transform(frames[0], frames[1], 0)
+        except TransformException:
+            return
+        if chain is None:
+            chain = core.chain(frames[1], 0, frames[0], 0, frames[1])
+        diff = now_ns / 1e9 - found.stamp_ns / 1e9
+        avg_diff = 0.01 * diff + 0.99 * avg_diff
+        max_diff = max(max_diff, diff)
+
+    for observation in [*observations, None]:
+        receive_ns = observation.receive_ns if observation is not None else end_ns + 1
+        while next_tick <= receive_ns:
+            tick(next_tick)
+            if next_tick >= next_report:
+                _print_report(frames, chain, avg_diff, max_diff, stats)
+                reports += 1
+                next_report += report_ns
+                if options.limit is not None and reports >= options.limit:
+                    return 0
+            next_tick += tick_ns
+        if observation is not None:
+            stats.add(observation, receive_ns / 1e9)
+            add_observation(core, observation)
+    if next_report - report_ns < end_ns or reports == 0:  # what came after the last report
+        _print_report(frames, chain, avg_diff, max_diff, stats)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """Return tf_monitor's argument parser (upstream's two frames plus the additions)."""
     parser = argparse.ArgumentParser(prog='tf_monitor', add_help=True)
     parser.add_argument('frames', nargs='*')
     parser.add_argument('--interval', type=float, default=TICK_S * TICKS_PER_REPORT)
     parser.add_argument('--limit', type=count_argument, default=None)
+    parser.add_argument(
+        '--bag', metavar='PATH', help='report on a rosbag2 recording instead of listening'
+    )
     return parser
 
 
@@ -192,6 +253,14 @@ def main(args: list[str] | None = None) -> int:
     if problem is not None:
         print_error('tf_monitor', problem)
         return 2
+    if options.bag is not None:
+        from tf_demo.bag import BagError
+
+        try:
+            return _monitor_bag(options)
+        except BagError as error:
+            print_error('tf_monitor', str(error))
+            return 1
     return run_tool(TOOL, ros_args, lambda: _monitor(options))
 
 
