@@ -27,6 +27,7 @@ TOOLS = [
     'tf_loader',
     'tf_demo_live',
     'tf_view',
+    'tf_topic',
 ]
 # Upstream's names for the same tools (tf2_ros' tf2_echo and tf2_monitor).
 ALIASES = {'tf2_echo': 'tf_echo', 'tf2_monitor': 'tf_monitor'}

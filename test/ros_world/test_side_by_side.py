@@ -45,6 +45,7 @@ from xml.etree import ElementTree
 from conftest import _exclusive_domain
 from conftest import eventually
 from conftest import ProcessOutput
+from conftest import run_captured
 import pytest
 from ros_world.jazzy import kill_group
 from ros_world.jazzy import rclpy_node
@@ -53,6 +54,7 @@ from ros_world.jazzy import require_package
 from ros_world.jazzy import ros2
 from ros_world.jazzy import running
 from ros_world.jazzy import start_session
+from ros_world.jazzy import started
 from ros_world.jazzy import stop
 import yaml
 
@@ -1132,3 +1134,16 @@ def test_robot_state_publisher_takes_the_description_on_the_command_line(
     assert their_graph is not None, their_logs
     assert our_graph is not None, our_logs
     assert our_logs == their_logs
+
+
+def test_tf_topic_echo_prints_what_ros2_topic_echo_prints(tf2_ros_cpp: dict[str, str]) -> None:
+    """One latched /tf_static message: ``tf_topic echo --once`` prints ``ros2 topic echo``'s."""
+    env = tf2_ros_cpp
+    publisher = static_publisher('a', 'b', '--x', '1.5', '--qz', '0.6', '--qw', '0.8')
+    with started(publisher, env):
+        theirs = ros2(env, 'topic', 'echo', '--once', '/tf_static', timeout=60)
+        ours = run_captured(ours_run('tf_topic', 'echo', '/tf_static', '--once'), env, timeout=60)
+    assert theirs.returncode == 0, theirs.stderr
+    assert ours.returncode == 0, ours.stderr
+    assert 'child_frame_id: b' in ours.stdout
+    assert ours.stdout == theirs.stdout

@@ -27,11 +27,13 @@ from collections.abc import Mapping
 from collections.abc import Sequence
 import json
 import math
+import sys
 
 from tf_demo.core.math3d import matrix_from_quat
 from tf_demo.core.math3d import Quat
 from tf_demo.core.math3d import rpy_from_quat
 from tf_demo.core.math3d import Vec3
+import yaml
 
 # ---------------------------------------------------------------------------------------------
 # tf_echo
@@ -329,3 +331,42 @@ def format_monitor_broadcasters(
             f'{format_cpp_default(average)} Max Delay: {format_cpp_default(maximum)}'
         )
     return ''.join(line + '\n' for line in lines)
+
+
+def _message_tree(value: object) -> object:
+    """Return a message as ordered mappings and lists, field by field (rosidl_runtime_py's)."""
+    fields = getattr(value, 'get_fields_and_field_types', None)
+    if fields is not None:
+        return _OrderedFields((name, _message_tree(getattr(value, name))) for name in fields())
+    if isinstance(value, (list, tuple)):
+        return [_message_tree(item) for item in value]
+    tolist = getattr(value, 'tolist', None)  # array.array and numpy arrays
+    if tolist is not None:
+        return tolist()
+    return value
+
+
+class _OrderedFields(dict[str, object]):
+    """A message's fields in declaration order (dumped as a plain block mapping)."""
+
+
+def _represent_fields(dumper: yaml.Dumper, data: _OrderedFields) -> yaml.Node:
+    return dumper.represent_mapping('tag:yaml.org,2002:map', data.items())
+
+
+class _MessageDumper(yaml.Dumper):
+    """PyYAML's default dumper, with a message's fields kept in order."""
+
+
+_MessageDumper.add_representer(_OrderedFields, _represent_fields)
+
+
+def format_message_yaml(message: object) -> str:
+    """Return ``message`` as ``ros2 topic echo`` prints it (block YAML, before the ``---``)."""
+    return yaml.dump(
+        _message_tree(message),
+        Dumper=_MessageDumper,
+        allow_unicode=True,
+        width=sys.maxsize,
+        default_flow_style=False,
+    )
