@@ -28,6 +28,7 @@ TOOLS = [
     'tf_demo_live',
     'tf_view',
     'tf_topic',
+    'tf_record',
 ]
 # Upstream's names for the same tools (tf2_ros' tf2_echo and tf2_monitor).
 ALIASES = {'tf2_echo': 'tf_echo', 'tf2_monitor': 'tf_monitor'}
@@ -71,6 +72,8 @@ setup(
             # tf_view's browser tests (with Debian's chromium and chromium-driver)
             'selenium>=4.10',
             'pillow',
+            # tf_record's bags read back independently of rosbags
+            'mcap',
         ],
     },
     zip_safe=True,

@@ -115,7 +115,7 @@ if [ -f "$jazzy_setup" ]; then
   echo "== pip install (ROS world): yourdfpy xacro viser rosbags pytest-timeout ruff mypy selenium colcon"
   "$jazzy_venv/bin/python" -m pip install "${pip_quiet[@]}" -c "$constraints" \
     'yourdfpy>=0.0.56' xacro 'pytest>=7,<8' pytest-timeout 'hypothesis>=6.80' 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
-    'viser>=1.0' pycollada 'rosbags>=0.10' 'selenium>=4.10' pillow colcon-common-extensions
+    'viser>=1.0' pycollada 'rosbags>=0.10' mcap 'selenium>=4.10' pillow colcon-common-extensions
   echo "== ROS world: colcon build + colcon test on $(dirname "$jazzy_setup")"
   (
     set +u

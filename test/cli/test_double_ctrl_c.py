@@ -67,6 +67,7 @@ def executable_arguments(tmp_path: Path) -> dict[str, list[str]]:
         'tf_demo_live': ['--quiet', '--duration', '600', '--view-port', '0'],
         'tf_view': ['--port', '0', '--urdf', urdf],
         'tf_topic': ['hz', '/tf'],
+        'tf_record': ['-o', str(tmp_path / 'recorded')],
     }
 
 

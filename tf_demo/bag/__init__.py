@@ -25,5 +25,6 @@ from tf_demo.bag.reader import BagRecord
 from tf_demo.bag.reader import load_buffer
 from tf_demo.bag.reader import open_tf_bag
 from tf_demo.bag.reader import TfBag
+from tf_demo.bag.writer import TfBagWriter
 
-__all__ = ['BagError', 'BagRecord', 'TfBag', 'load_buffer', 'open_tf_bag']
+__all__ = ['BagError', 'BagRecord', 'TfBag', 'TfBagWriter', 'load_buffer', 'open_tf_bag']

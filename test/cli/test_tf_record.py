@@ -1,0 +1,88 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""tf_record: live TF into a rosbag2, read back with rosbags' reader and the mcap package."""
+
+from __future__ import annotations
+
+from pathlib import Path
+import signal
+from typing import Any
+
+from conftest import ProcessOutput
+import pytest
+from tf_demo.bag import load_buffer
+from tf_demo.msgs.cdr import deserialize
+from tf_demo.msgs.tf2_msgs import TFMessage
+
+rosbag2 = pytest.importorskip('rosbags.rosbag2', reason="tf_record needs the 'bag' extra")
+
+
+def test_a_recording_holds_the_live_tree(spawn: Any, tmp_path: Path) -> None:
+    """static_tf_pub (started first: latched) and dynamic_tf_pub, 3 s, MCAP: all there."""
+    spawn.start('static_tf_pub')
+    spawn.start('dynamic_tf_pub')
+    bag = tmp_path / 'run'
+    record = ProcessOutput(spawn.start('tf_record', '-o', str(bag), '--duration', '3'))
+    assert record.process.wait(timeout=60) == 0
+    assert record.wait_for_line('tf_record: recording /tf /tf_static to ', timeout=5)
+    with rosbag2.Reader(bag) as reader:  # rosbags' own reader
+        topics = {c.topic: (c.msgtype, c.ext.serialization_format) for c in reader.connections}
+        statics = [
+            deserialize(TFMessage, data)
+            for connection, _, data in reader.messages()
+            if connection.topic == '/tf_static'
+        ]
+        durabilities = {
+            c.topic: c.ext.offered_qos_profiles[0].durability.name for c in reader.connections
+        }
+    assert topics == {
+        '/tf': ('tf2_msgs/msg/TFMessage', 'cdr'),
+        '/tf_static': ('tf2_msgs/msg/TFMessage', 'cdr'),
+    }
+    assert durabilities == {'/tf': 'VOLATILE', '/tf_static': 'TRANSIENT_LOCAL'}
+    assert [t.child_frame_id for m in statics for t in m.transforms] == ['camera_link']
+    core = load_buffer(bag)
+    assert core.can_transform('odom', 'camera_link', 0)
+    mcap_reader = pytest.importorskip('mcap.reader')
+    mcap_file = next(bag.glob('*.mcap'))
+    with mcap_file.open('rb') as stream:  # the mcap package, independent of rosbags
+        summary = mcap_reader.make_reader(stream).get_summary()
+    assert summary is not None
+    channels = {c.topic: c.message_encoding for c in summary.channels.values()}
+    assert channels == {'/tf': 'cdr', '/tf_static': 'cdr'}
+    assert summary.statistics.message_count > 20  # 3 s of 20 Hz
+
+
+def test_ctrl_c_closes_a_sqlite3_bag_cleanly(spawn: Any, tmp_path: Path) -> None:
+    spawn.start('dynamic_tf_pub')
+    bag = tmp_path / 'run'
+    record = ProcessOutput(
+        spawn.start('tf_record', '-o', str(bag), '--storage', 'sqlite3', '--topics', '/tf')
+    )
+    record.wait_for_line('tf_record: recording /tf to ', timeout=60)
+    record.process.send_signal(signal.SIGINT)
+    assert record.process.wait(timeout=30) == 0
+    assert record.wait_for_line('tf_record: ', timeout=5)
+    assert (bag / 'metadata.yaml').is_file()  # written on close
+    with rosbag2.Reader(bag) as reader:
+        assert [c.topic for c in reader.connections] == ['/tf']
+
+
+def test_an_existing_output_is_refused(spawn: Any, tmp_path: Path) -> None:
+    (tmp_path / 'run').mkdir()
+    process = spawn.start('tf_record', '-o', str(tmp_path / 'run'))
+    _, err = process.communicate(timeout=60)
+    assert process.returncode == 1
+    assert err.strip().endswith('run: already exists (rosbag2 writes a new directory)')

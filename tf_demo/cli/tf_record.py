@@ -1,0 +1,132 @@
+# Copyright 2026 The tf_demo Authors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+``tf_record -o PATH [--duration S] [--topics ...] [--storage S]``: record TF to a rosbag2.
+
+Records ``/tf`` and ``/tf_static`` (and, when asked, ``/joint_states``, ``/robot_description``,
+``/clock``) from the live network, in either world, into a new rosbag2 that ROS 2's tools open:
+MCAP by default, the topics' type names, ``cdr`` and the QoS their publishers offer in the
+metadata. Messages are written as received (serialised, untouched) with the node clock's time.
+``/tf_static`` and ``/robot_description`` are subscribed latched, so what was published before
+the recording started is in it. Ctrl-C or ``--duration`` closes the bag cleanly (exit 0).
+Needs the ``bag`` extra. ``--ros-args`` is accepted.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import time
+from typing import Any
+
+from tf_demo.cli._live import tool_main
+from tf_demo.cli._live import ToolError
+
+TOOL = 'tf_record'
+DEFAULT_TOPICS = ['/tf', '/tf_static']
+SPIN_SLICE_S = 0.1
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Return tf_record's command line."""
+    from tf_demo.bag.writer import STORAGES
+    from tf_demo.bag.writer import TOPIC_TYPES
+
+    parser = argparse.ArgumentParser(prog=TOOL, description=__doc__.strip().splitlines()[0])
+    parser.add_argument('-o', '--output', required=True, help='the new bag (a directory)')
+    parser.add_argument('--duration', type=float, default=None, help='seconds, then stop')
+    parser.add_argument(
+        '--topics', nargs='+', default=DEFAULT_TOPICS, choices=sorted(TOPIC_TYPES),
+        metavar='TOPIC', help=f'default: /tf /tf_static; any of {sorted(TOPIC_TYPES)}',
+    )  # fmt: skip
+    parser.add_argument('--storage', choices=STORAGES, default='mcap', help='rosbag2 storage')
+    return parser
+
+
+def options_error(options: argparse.Namespace) -> str | None:
+    """Return what is wrong with the options, or None."""
+    duration = options.duration
+    if duration is not None and not (math.isfinite(duration) and duration > 0):
+        return f'--duration must be a positive number of seconds, got {duration}'
+    return None
+
+
+def _subscription_of(topic: str) -> tuple[Any, Any]:
+    """Return the message type and QoS to subscribe to ``topic`` with."""
+    from tf_demo.transport.messages import rosgraph_msgs
+    from tf_demo.transport.messages import sensor_msgs
+    from tf_demo.transport.messages import std_msgs
+    from tf_demo.transport.messages import tf2_msgs
+    from tf_demo.transport.qos import DurabilityPolicy
+    from tf_demo.transport.qos import DynamicListenerQoS
+    from tf_demo.transport.qos import QoSProfile
+    from tf_demo.transport.qos import ReliabilityPolicy
+    from tf_demo.transport.qos import StaticListenerQoS
+
+    if topic == '/tf':
+        return tf2_msgs.TFMessage, DynamicListenerQoS()
+    if topic == '/tf_static':
+        return tf2_msgs.TFMessage, StaticListenerQoS()
+    if topic == '/robot_description':
+        latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        return std_msgs.String, latched
+    if topic == '/clock':  # best effort takes both kinds of /clock publisher
+        return rosgraph_msgs.Clock, QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT)
+    return sensor_msgs.JointState, 10
+
+
+def _record(options: argparse.Namespace) -> int:
+    from tf_demo import transport
+    from tf_demo.bag import BagError
+    from tf_demo.bag import TfBagWriter
+
+    try:
+        bag = TfBagWriter(options.output, list(dict.fromkeys(options.topics)), options.storage)
+    except BagError as error:
+        raise ToolError(str(error)) from None
+    node = transport.create_node(TOOL)
+    clock = node.get_clock()
+    try:
+        for topic in bag_topics(options):
+            msg_type, qos = _subscription_of(topic)
+
+            def on_data(data: bytes, topic: str = topic) -> None:
+                bag.write(topic, clock.now().nanoseconds, bytes(data))
+
+            node.create_subscription(msg_type, topic, on_data, qos, raw=True)
+        print(f'tf_record: recording {" ".join(bag_topics(options))} to {bag.path}', flush=True)
+        deadline = None if options.duration is None else time.monotonic() + options.duration
+        while transport.ok() and (deadline is None or time.monotonic() < deadline):
+            transport.spin_once(node, timeout_sec=SPIN_SLICE_S)
+    finally:
+        node.destroy_node()
+        bag.close()
+        print(f'tf_record: {bag.count} messages in {bag.path}', flush=True)
+    return 0
+
+
+def bag_topics(options: argparse.Namespace) -> list[str]:
+    """Return the topics to record, each once, in the order given."""
+    return list(dict.fromkeys(options.topics))
+
+
+def main(args: list[str] | None = None) -> int:
+    """Run tf_record with ``args`` (default: ``sys.argv[1:]``)."""
+    return tool_main(TOOL, args, build_parser(), options_error, _record)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
