@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from types import TracebackType
 from typing import Any
+from typing import TypeVar
 
 from tf_demo.core.buffer_core import BufferCore
 from tf_demo.msgs.cdr import decode_tf_message_transforms
@@ -54,7 +55,29 @@ class BagRecord:
     is_static: bool
 
 
-class TfBag:
+_Closing = TypeVar('_Closing', bound='ClosesOnExit')
+
+
+class ClosesOnExit:
+    """A context manager whose exit calls :meth:`close` (the bag reader's and writer's)."""
+
+    def close(self) -> None:
+        """Release the files."""
+        raise NotImplementedError
+
+    def __enter__(self: _Closing) -> _Closing:
+        return self
+
+    def __exit__(
+        self,
+        kind: type[BaseException] | None,
+        value: BaseException | None,
+        traceback: TracebackType | None,
+    ) -> None:
+        self.close()
+
+
+class TfBag(ClosesOnExit):
     """An open bag's TF connections (use :func:`open_tf_bag`; a context manager)."""
 
     def __init__(self, path: Path, reader: Any, connections: list[Any], static_topic: str) -> None:
@@ -108,17 +131,6 @@ class TfBag:
     def close(self) -> None:
         """Close the bag's files."""
         self._reader.close()
-
-    def __enter__(self) -> TfBag:
-        return self
-
-    def __exit__(
-        self,
-        kind: type[BaseException] | None,
-        value: BaseException | None,
-        traceback: TracebackType | None,
-    ) -> None:
-        self.close()
 
 
 def open_tf_bag(

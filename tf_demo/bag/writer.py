@@ -25,10 +25,10 @@ storage allows (SQLite3 commits each message; MCAP needs its summary, written on
 from __future__ import annotations
 
 from pathlib import Path
-from types import TracebackType
 from typing import Any
 
 from tf_demo.bag.reader import BagError
+from tf_demo.bag.reader import ClosesOnExit
 
 #: What each recordable topic holds, and whether its publishers latch it.
 TOPIC_TYPES = {
@@ -58,7 +58,7 @@ def _offered_qos(latched: bool, depth: int) -> Any:
     )  # fmt: skip
 
 
-class TfBagWriter:
+class TfBagWriter(ClosesOnExit):
     """A new rosbag2 at ``path`` for ``topics`` (a context manager; :meth:`write` each message)."""
 
     def __init__(self, path: str | Path, topics: list[str], storage: str = 'mcap') -> None:
@@ -101,14 +101,3 @@ class TfBagWriter:
     def close(self) -> None:
         """Finish the bag (its metadata and, for MCAP, the summary)."""
         self._writer.close()
-
-    def __enter__(self) -> TfBagWriter:
-        return self
-
-    def __exit__(
-        self,
-        kind: type[BaseException] | None,
-        value: BaseException | None,
-        traceback: TracebackType | None,
-    ) -> None:
-        self.close()
