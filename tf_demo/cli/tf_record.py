@@ -94,20 +94,21 @@ def _record(options: argparse.Namespace) -> int:
     from tf_demo.bag import TfBagWriter
 
     try:
-        bag = TfBagWriter(options.output, list(dict.fromkeys(options.topics)), options.storage)
+        topics = list(dict.fromkeys(options.topics))  # each once, in the order given
+        bag = TfBagWriter(options.output, topics, options.storage)
     except BagError as error:
         raise ToolError(str(error)) from None
     node = transport.create_node(TOOL)
     clock = node.get_clock()
     try:
-        for topic in bag_topics(options):
+        for topic in topics:
             msg_type, qos = _subscription_of(topic)
 
             def on_data(data: bytes, topic: str = topic) -> None:
                 bag.write(topic, clock.now().nanoseconds, bytes(data))
 
             node.create_subscription(msg_type, topic, on_data, qos, raw=True)
-        print(f'tf_record: recording {" ".join(bag_topics(options))} to {bag.path}', flush=True)
+        print(f'tf_record: recording {" ".join(topics)} to {bag.path}', flush=True)
         deadline = None if options.duration is None else time.monotonic() + options.duration
         while transport.ok() and (deadline is None or time.monotonic() < deadline):
             transport.spin_once(node, timeout_sec=SPIN_SLICE_S)
@@ -116,11 +117,6 @@ def _record(options: argparse.Namespace) -> int:
         bag.close()
         print(f'tf_record: {bag.count} messages in {bag.path}', flush=True)
     return 0
-
-
-def bag_topics(options: argparse.Namespace) -> list[str]:
-    """Return the topics to record, each once, in the order given."""
-    return list(dict.fromkeys(options.topics))
 
 
 def main(args: list[str] | None = None) -> int:
