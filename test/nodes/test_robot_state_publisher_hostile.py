@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 import contextlib
+import itertools
 import math
 from pathlib import Path
 import shutil
@@ -201,8 +202,8 @@ def test_a_mimic_of_a_missing_joint_loads_and_publishes_as_upstream(
                 return count >= 1
 
             wait_until(subscribed, timeout=60, what='a robot_state_publisher subscription')
-            publisher.publish(joint_state(['j', 'ghost'], [math.pi / 2, 1.0], 2000 * SECOND))
         children = {'b'} | ({'upstream/b'} if upstream_wanted else set())
+        sent = itertools.count()
 
         def published() -> dict[str, Any]:
             found = {}
@@ -211,7 +212,17 @@ def test_a_mimic_of_a_missing_joint_loads_and_publishes_as_upstream(
                     found[transform.child_frame_id] = transform.transform.rotation
             return found
 
-        wait_until(lambda: children <= set(published()), timeout=30, what=f'{children} on /tf')
+        def fed_until_published() -> bool:
+            # Sent again (a newer stamp each time, as joint_state_publisher would) every half
+            # second: a sample written while a reader on either side is still matching is lost.
+            count = next(sent)
+            if count % 50 == 0:
+                stamp = (2000 + count // 50) * SECOND
+                for publisher in publishers:
+                    publisher.publish(joint_state(['j', 'ghost'], [math.pi / 2, 1.0], stamp))
+            return children <= set(published())
+
+        wait_until(fed_until_published, timeout=30, what=f'{children} on /tf')
         half = math.sqrt(0.5)
         for child, rotation in published().items():
             assert (rotation.x, rotation.y, rotation.z, rotation.w) == pytest.approx(

@@ -17,6 +17,8 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+import subprocess
+import sys
 import threading
 import time
 from typing import Any
@@ -152,6 +154,42 @@ def test_spin_thread_listener_does_not_spin_the_users_node(ros: None) -> None:
         assert fired == []
     finally:
         listener.unregister()
+
+
+#: A process that leaves a spin-thread listener running when its interpreter exits.
+LISTENER_LEFT_RUNNING = """
+from tf_demo import transport
+from tf_demo.ros import Buffer, TransformListener
+
+transport.init(['left_running'])
+node = transport.create_node('left_running')
+listener = TransformListener(Buffer(node=node), node, spin_thread=True)
+print('listening', flush=True)
+"""
+
+
+@pytest.mark.parametrize('shutdown_first', [False, True], ids=['running', 'shut_down'])
+def test_a_listener_never_unregistered_does_not_abort_the_exit(
+    world_env: dict[str, str], shutdown_first: bool
+) -> None:
+    """
+    A program that exits with its spin-thread listener still running exits 0.
+
+    Under rclpy the private thread, still blocked in the middleware when Python finalised, was
+    killed inside pybind11 and the process aborted (``terminate called without an active
+    exception``, exit -6): a tool interrupted between creating its listener and its ``try``.
+    """
+    code = LISTENER_LEFT_RUNNING + ('transport.shutdown()\n' if shutdown_first else '')
+    result = subprocess.run(
+        [sys.executable, '-c', code],
+        env=world_env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert (result.returncode, result.stdout) == (0, 'listening\n'), result.stderr
+    assert 'terminate called' not in result.stderr
 
 
 def test_wait_started_before_the_publisher_process_resolves(spawn: Any, ros: None) -> None:

@@ -39,6 +39,7 @@ The authority recorded for each transform is ``'default_authority'``, as in tf2_
 
 from __future__ import annotations
 
+import atexit
 from collections.abc import Callable
 from collections.abc import Mapping
 import contextlib
@@ -71,6 +72,28 @@ DEFAULT_STATIC_TF_TOPIC = '/tf_static'
 DEFAULT_AUTHORITY = 'default_authority'
 SPIN_STOP_CHECK_S = 0.1
 """How long the private executor blocks per ``spin_once`` before checking for shutdown."""
+SPIN_THREAD_JOIN_S = 5.0
+"""How long stopping a listener waits for its private thread (a hang guard)."""
+
+_spin_threads: dict[threading.Thread, threading.Event] = {}
+"""The private spin threads still running, with the event that stops each."""
+
+
+@atexit.register
+def _stop_spin_threads_at_exit() -> None:
+    """
+    Stop and join every private spin thread before the interpreter finalises.
+
+    A listener not unregistered (its owner interrupted between creating it and its ``try``)
+    leaves a daemon thread blocked in the middleware with the GIL released. Under rclpy that
+    thread, waking while Python finalises, is ended by ``pthread_exit`` inside pybind11's
+    ``noexcept`` GIL guard: ``terminate called without an active exception`` and exit -6.
+    ``atexit`` runs before finalisation, while the thread can still return on its own.
+    """
+    for thread, stop in list(_spin_threads.items()):
+        stop.set()
+        thread.join(timeout=SPIN_THREAD_JOIN_S)
+    _spin_threads.clear()
 
 
 class TransformSink(Protocol):
@@ -161,6 +184,7 @@ class TransformListener:
         self.dedicated_listener_thread = threading.Thread(
             target=self._spin, args=(executor,), name='tf_demo_transform_listener', daemon=True
         )
+        _spin_threads[self.dedicated_listener_thread] = self._stop
         self.dedicated_listener_thread.start()
 
     def _spin(self, executor: SingleThreadedExecutor) -> None:
@@ -259,7 +283,9 @@ class TransformListener:
         self._stop.set()
         thread = self.dedicated_listener_thread
         if thread is not None and thread is not threading.current_thread():
-            thread.join(timeout=5.0)
+            thread.join(timeout=SPIN_THREAD_JOIN_S)
+        if thread is not None:
+            _spin_threads.pop(thread, None)
         self.dedicated_listener_thread = None
         self._log_pending()
         host = self._private_node if self._private_node is not None else self.node
