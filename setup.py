@@ -29,6 +29,7 @@ TOOLS = [
     'tf_view',
     'tf_topic',
     'tf_record',
+    'tf_plot',
 ]
 # Upstream's names for the same tools (tf2_ros' tf2_echo and tf2_monitor).
 ALIASES = {'tf2_echo': 'tf_echo', 'tf2_monitor': 'tf_monitor'}
@@ -58,8 +59,8 @@ setup(
         'dds': ['cyclonedds==11.0.1'],
         # tf_view's live 3D view in the browser.
         'view': ['viser>=1.0', 'pycollada'],
-        # tf_demo.bag: rosbag2 recordings (MCAP and SQLite3) without ROS.
-        'bag': ['rosbags>=0.10'],  # pycollada: trimesh reads .dae meshes with it
+        # tf_demo.bag: rosbag2 recordings (MCAP and SQLite3) without ROS; tf_plot's plots.
+        'bag': ['rosbags>=0.10', 'matplotlib>=3.6'],
         'test': [
             'cyclonedds==11.0.1',
             'pytest>=7',

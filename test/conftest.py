@@ -48,6 +48,18 @@ if TYPE_CHECKING:
     from tf_demo.transport.dds.participant import DdsParticipant
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
+#: Where tests save what a person should look at (screenshots, plots): ``$TF_DEMO_ARTIFACTS``.
+ARTIFACTS = Path(os.environ.get('TF_DEMO_ARTIFACTS', REPO_ROOT / 'test-artifacts'))
+
+
+def save_artifact(name: str, data: bytes) -> Path:
+    """Save ``data`` as the test artifact ``name`` and return its path."""
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    path = ARTIFACTS / name
+    path.write_bytes(data)
+    return path
+
+
 TF_FAULT_PEER = REPO_ROOT / 'test' / 'cli' / 'tf_fault_peer.py'
 
 # Every hypothesis test runs deterministically in CI (derandomized 'ci' profile) unless

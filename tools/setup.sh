@@ -112,10 +112,10 @@ if [ -f "$jazzy_setup" ]; then
   # (so no pinocchio here: its wheels need numpy >= 1.26; the kinematics oracle runs standalone).
   constraints="$logs/constraints.txt"
   /usr/bin/python3 -c 'import numpy; print(f"numpy=={numpy.__version__}")' >"$constraints"
-  echo "== pip install (ROS world): yourdfpy xacro viser rosbags pytest-timeout ruff mypy selenium colcon"
+  echo "== pip install (ROS world): yourdfpy xacro viser rosbags matplotlib pytest-timeout ruff mypy selenium colcon"
   "$jazzy_venv/bin/python" -m pip install "${pip_quiet[@]}" -c "$constraints" \
     'yourdfpy>=0.0.56' xacro 'pytest>=7,<8' pytest-timeout 'hypothesis>=6.80' 'ruff==0.17.5' 'mypy>=1.10' types-PyYAML \
-    'viser>=1.0' pycollada 'rosbags>=0.10' mcap 'selenium>=4.10' pillow colcon-common-extensions
+    'viser>=1.0' pycollada 'rosbags>=0.10' 'matplotlib>=3.6' mcap 'selenium>=4.10' pillow colcon-common-extensions
   echo "== ROS world: colcon build + colcon test on $(dirname "$jazzy_setup")"
   (
     set +u

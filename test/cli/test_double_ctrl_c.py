@@ -68,6 +68,7 @@ def executable_arguments(tmp_path: Path) -> dict[str, list[str]]:
         'tf_view': ['--port', '0', '--urdf', urdf],
         'tf_topic': ['hz', '/tf'],
         'tf_record': ['-o', str(tmp_path / 'recorded')],
+        'tf_plot': ['a', 'b', '--duration', '600', '-o', str(tmp_path / 'plot.png')],
     }
 
 

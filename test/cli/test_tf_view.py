@@ -33,6 +33,7 @@ from typing import Any
 from conftest import eventually
 from conftest import Processes
 from conftest import ProcessOutput
+from conftest import save_artifact
 import numpy as np
 import pytest
 
@@ -50,9 +51,6 @@ pytestmark = [
     pytest.mark.timeout(180),
 ]
 URDF = Path(__file__).resolve().parents[2] / 'urdf'
-ARTIFACTS = Path(
-    os.environ.get('TF_DEMO_ARTIFACTS', Path(__file__).resolve().parents[2] / 'test-artifacts')
-)
 # Chromium as root in a container: no sandbox, no GPU (WebGL through SwiftShader), and none
 # of the background connections this machine's closed network refuses.
 CHROMIUM_FLAGS = (
@@ -137,9 +135,8 @@ def choose(browser: Any, label: str, option: str) -> None:
 
 def screenshot(browser: Any, name: str) -> Any:
     """Take a screenshot, save it as a test artifact and return it as an RGB image."""
-    ARTIFACTS.mkdir(parents=True, exist_ok=True)
     data = browser.get_screenshot_as_png()
-    (ARTIFACTS / f'tf_view_{name}.png').write_bytes(data)
+    save_artifact(f'tf_view_{name}.png', data)
     return Image.open(io.BytesIO(data)).convert('RGB')
 
 

@@ -162,6 +162,11 @@ def _create_temporary(target: str) -> tuple[int, str]:
 
 def write_text_atomically(path: str | os.PathLike[str], text: str) -> None:
     """Replace the regular file at ``path`` (or create it) with UTF-8 ``text``, atomically."""
+    write_bytes_atomically(path, text.encode('utf-8'))
+
+
+def write_bytes_atomically(path: str | os.PathLike[str], data: bytes) -> None:
+    """Replace the regular file at ``path`` (or create it) with ``data``, atomically."""
     source = os.fspath(path)
     if not source:
         msg = 'the output path is empty'
@@ -174,8 +179,8 @@ def write_text_atomically(path: str | os.PathLike[str], text: str) -> None:
         reason = error.strerror or str(error)
         raise OutputFileError(f'{source}: cannot write ({reason})') from None
     try:
-        with os.fdopen(descriptor, 'w', encoding='utf-8') as handle:
-            handle.write(text)
+        with os.fdopen(descriptor, 'wb') as handle:
+            handle.write(data)
             handle.flush()
             if status is not None:
                 os.fchmod(handle.fileno(), stat.S_IMODE(status.st_mode))
