@@ -30,6 +30,7 @@ TOOLS = [
     'tf_topic',
     'tf_record',
     'tf_plot',
+    'tf_play',
 ]
 # Upstream's names for the same tools (tf2_ros' tf2_echo and tf2_monitor).
 ALIASES = {'tf2_echo': 'tf_echo', 'tf2_monitor': 'tf_monitor'}

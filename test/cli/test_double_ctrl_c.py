@@ -69,7 +69,24 @@ def executable_arguments(tmp_path: Path) -> dict[str, list[str]]:
         'tf_topic': ['hz', '/tf'],
         'tf_record': ['-o', str(tmp_path / 'recorded')],
         'tf_plot': ['a', 'b', '--duration', '600', '-o', str(tmp_path / 'plot.png')],
+        'tf_play': [str(looped_bag(tmp_path / 'bag')), '--loop', '--clock'],
     }
+
+
+def looped_bag(path: Path) -> Path:
+    """A bag for tf_play: one static and ten /tf messages (written when tf_play is tested)."""
+    if path.exists():
+        return path
+    from tf_demo.testing.bags import tf_bytes
+    from tf_demo.testing.bags import transform
+    from tf_demo.testing.bags import write_bag
+
+    start = 1_700_000_000_000_000_000
+    messages = [('/tf_static', start, tf_bytes(transform('a', 'b', start, (1, 0, 0))))]
+    for k in range(10):
+        stamp = start + k * 100_000_000
+        messages.append(('/tf', stamp, tf_bytes(transform('b', 'c', stamp, (k, 0, 0)))))
+    return write_bag(path, 'mcap', messages)
 
 
 def setup_py_executables() -> set[str]:

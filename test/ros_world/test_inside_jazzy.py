@@ -34,6 +34,7 @@ from conftest import run_captured
 import pytest
 from ros_world.jazzy import graph_lists
 from ros_world.jazzy import ros2
+from ros_world.jazzy import running
 from ros_world.jazzy import standalone_command
 from ros_world.jazzy import standalone_env
 from ros_world.jazzy import started
@@ -239,6 +240,37 @@ def test_real_tf2_ros_listener_follows_dynamic_tf_pub(
         assert math.hypot(x, y) == pytest.approx(2.0, abs=1e-6)
         assert z == 0.0
     assert translation(first) != translation(second)
+
+
+def test_real_tf2_ros_listener_follows_tf_play(
+    jazzy_env: dict[str, str], real_tf2: RealTf2Listener, tmp_path: Path
+) -> None:
+    """``ros2 run tf_demo tf_play`` on a bag written with rosbags: a real tf2_ros listener gets
+    the static recorded late (latched from the start) and the moving /tf under it."""
+    pytest.importorskip('rosbags.rosbag2', reason="tf_play needs the 'bag' extra")
+    from tf_demo.testing.bags import SECOND
+    from tf_demo.testing.bags import tf_bytes
+    from tf_demo.testing.bags import transform
+    from tf_demo.testing.bags import write_bag
+
+    start = 1_700_000_000 * SECOND
+    stamps = [start + k * SECOND // 20 for k in range(21)]
+    messages = [
+        ('/tf', stamp, tf_bytes(transform('odom', 'base_link', stamp, (k, 0, 0))))
+        for k, stamp in enumerate(stamps)
+    ]
+    messages.append(
+        ('/tf_static', stamps[-1], tf_bytes(transform('map', 'odom', start, (1, 2, 0))))
+    )
+    bag = write_bag(tmp_path / 'bag', 'mcap', messages)
+    command = ['ros2', 'run', 'tf_demo', 'tf_play', str(bag), '--loop']
+    with running(command, jazzy_env) as play:
+        looked_up = real_tf2.lookup('map', 'base_link')
+        lines = list(play.lines)
+    assert looked_up is not None, "\n".join(lines)
+    x, y, z = translation(looked_up)
+    assert (x - 1.0) in set(range(21))
+    assert (y, z) == (2.0, 0.0)
 
 
 def test_real_tf2_ros_listener_receives_robot_state_publisher(

@@ -53,6 +53,8 @@ class BagRecord:
     bag_time_ns: int
     transforms: list[TransformTuple]
     is_static: bool
+    data: bytes = b''
+    """The recorded CDR bytes (they decode to ``transforms``)."""
 
 
 _Closing = TypeVar('_Closing', bound='ClosesOnExit')
@@ -101,14 +103,19 @@ class TfBag(ClosesOnExit):
         """The TF topics found (their order in the bag)."""
         return [connection.topic for connection in self._connections]
 
-    def records(self) -> Iterator[BagRecord]:
+    def records(self, *, statics_only: bool = False) -> Iterator[BagRecord]:
         """
-        Yield every TF message in recording order.
+        Yield every TF message (or only the static topic's) in recording order.
 
         :raises BagError: at the first damaged chunk or undecodable message, after yielding
             everything before it.
         """
-        messages = self._reader.messages(connections=self._connections)
+        connections = self._connections
+        if statics_only:
+            connections = [c for c in connections if c.topic == self._static_topic]
+            if not connections:
+                return
+        messages = self._reader.messages(connections=connections)
         bag_time = self.start_ns
         while True:
             try:
@@ -126,7 +133,8 @@ class TfBag(ClosesOnExit):
                     f'{_seconds(bag_time)} s is not a TFMessage: {error}'
                 )
                 raise BagError(msg) from None
-            yield BagRecord(int(bag_time), transforms, connection.topic == self._static_topic)
+            is_static = connection.topic == self._static_topic
+            yield BagRecord(int(bag_time), transforms, is_static, bytes(data))
 
     def close(self) -> None:
         """Close the bag's files."""
