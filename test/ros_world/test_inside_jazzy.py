@@ -267,7 +267,7 @@ def test_real_tf2_ros_listener_follows_tf_play(
     with running(command, jazzy_env) as play:
         looked_up = real_tf2.lookup('map', 'base_link')
         lines = list(play.lines)
-    assert looked_up is not None, "\n".join(lines)
+    assert looked_up is not None, '\n'.join(lines)
     x, y, z = translation(looked_up)
     assert (x - 1.0) in set(range(21))
     assert (y, z) == (2.0, 0.0)
