@@ -29,6 +29,7 @@ from tf_demo.testing.bags import STORAGES
 from tf_demo.testing.bags import tf_bytes
 from tf_demo.testing.bags import transform
 from tf_demo.testing.bags import write_bag
+from tf_demo.testing.bags import write_humble_bag
 
 rosbag2 = pytest.importorskip('rosbags.rosbag2', reason="tf_demo.bag needs the 'bag' extra")
 
@@ -70,6 +71,27 @@ def test_the_circle_reads_back_exactly(tmp_path: Path, storage: str):
     assert early.translation[2] == 0.2
     with pytest.raises(ExtrapolationException):
         core.lookup_transform('odom', 'base_link', T0 + 3 * SECOND)  # the publisher stopped
+
+
+def test_a_bag_in_humbles_sqlite3_format_reads_back(tmp_path: Path) -> None:
+    """Metadata version 5 (QoS as a YAML string), schema 3: the same buffer as a Jazzy bag."""
+    messages = [('/tf', T0 + k * SECOND // 20, tf_bytes(circle(k))) for k in range(41)]
+    camera = transform('base_link', 'camera_link', T0 + SECOND, (0.5, 0.0, 0.2))
+    messages.insert(20, ('/tf_static', T0 + SECOND, tf_bytes(camera)))
+    humble = write_humble_bag(tmp_path / 'humble', messages)
+    jazzy = write_bag(tmp_path / 'jazzy', 'sqlite3', messages)
+    with open_tf_bag(humble) as bag:
+        assert (bag.start_ns, bag.end_ns) == (T0, T0 + 2 * SECOND)
+        assert [(r.bag_time_ns, r.is_static) for r in bag.records()][19:22] == [
+            (T0 + 19 * SECOND // 20, False),
+            (T0 + SECOND, True),
+            (T0 + SECOND, False),
+        ]
+    ours, theirs = load_buffer(humble), load_buffer(jazzy)
+    for when in (T0, T0 + 777_000_000, T0 + 2 * SECOND):
+        assert ours.lookup_transform('odom', 'camera_link', when) == theirs.lookup_transform(
+            'odom', 'camera_link', when
+        )
 
 
 @pytest.mark.parametrize('storage', STORAGES)

@@ -110,3 +110,26 @@ def test_ros2_bag_describes_and_plays_a_tf_record_bag(
         running(echo, jazzy_env) as tf2_echo,
     ):
         tf2_echo.wait_for_line(CAMERA, timeout=60)
+
+
+def test_the_humble_format_fixture_is_a_bag_real_rosbag2_reads(
+    jazzy_env: dict[str, str], tmp_path: Path
+) -> None:
+    """The hand-written Humble (SQLite3, metadata 5) test bag is one Jazzy's rosbag2 opens."""
+    from tf_demo.testing.bags import SECOND
+    from tf_demo.testing.bags import tf_bytes
+    from tf_demo.testing.bags import transform
+    from tf_demo.testing.bags import write_humble_bag
+
+    require_rosbag2(jazzy_env, 'sqlite3')
+    start = 1_700_000_000 * SECOND
+    stamps = [start + k * SECOND // 10 for k in range(10)]
+    bag = write_humble_bag(
+        tmp_path / 'humble',
+        [('/tf', stamp, tf_bytes(transform('a', 'b', stamp, (1, 0, 0)))) for stamp in stamps],
+    )
+    info = ros2(jazzy_env, 'bag', 'info', str(bag))
+    assert info.returncode == 0, info.stderr
+    assert 'Messages:          10' in info.stdout
+    assert 'Duration:          0.900000000s' in info.stdout
+    assert 'Topic: /tf | Type: tf2_msgs/msg/TFMessage | Count: 10' in info.stdout
