@@ -21,6 +21,7 @@ from pathlib import Path
 
 import pytest
 from tf_demo.bag import BagError
+from tf_demo.bag import load_bag
 from tf_demo.bag import load_buffer
 from tf_demo.bag import open_tf_bag
 from tf_demo.core.exceptions import ExtrapolationException
@@ -160,6 +161,27 @@ def test_an_undecodable_message_is_named_after_what_came_before(tmp_path: Path):
             match=r'message on /tf at bag time 1700000000\.000000005 s is not a TFMessage',
         ):
             next(records)
+
+
+def test_load_bag_keeps_what_precedes_the_damage(tmp_path: Path):
+    """A garbage message after a second of the circle: that second is in the buffer, the
+    damage is named, and the strict load_buffer refuses the bag."""
+    messages = [('/tf', T0 + k * SECOND // 20, tf_bytes(circle(k))) for k in range(21)]
+    messages.append(('/tf', T0 + 2 * SECOND, b'\x00\x01\x00\x00\xff\xff\xff\x7f'))
+    messages.append(('/tf', T0 + 3 * SECOND, tf_bytes(circle(60))))
+    path = write_bag(tmp_path / 'damaged', 'mcap', messages)
+    loaded = load_bag(path)
+    assert (loaded.start_ns, loaded.end_ns) == (T0, T0 + SECOND)
+    assert loaded.damage is not None
+    assert 'at bag time 1700000002.000000000 s is not a TFMessage' in str(loaded.damage)
+    got = loaded.core.lookup_transform('odom', 'base_link', T0 + SECOND)
+    assert got.translation[0] == circle(20).transform.translation.x
+    with pytest.raises(ExtrapolationException):  # nothing after the damage
+        loaded.core.lookup_transform('odom', 'base_link', T0 + 3 * SECOND)
+    with pytest.raises(BagError, match='is not a TFMessage'):
+        load_buffer(path)
+    whole = load_bag(circle_bag(tmp_path / 'whole', 'mcap'))
+    assert (whole.damage, whole.end_ns) == (None, T0 + 2 * SECOND)
 
 
 def test_a_truncated_mcap_is_refused_in_one_line(tmp_path: Path):

@@ -115,3 +115,24 @@ def test_bag_problems_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture
     assert capsys.readouterr().err.strip() == '--at needs --bag PATH (an instant of a recording)'
     assert main(['--bag', 'x', 'a', 'b', '--at', 'soon']) == 2
     assert capsys.readouterr().err.strip() == '--at needs a number of seconds, got soon'
+
+
+def test_a_damaged_bag_echoes_what_came_before_then_says_where(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """One second of a -> b, then garbage: 11 blocks (every 0.1 s), one error line, exit 1."""
+    stamps = [T0 + k * SECOND // 10 for k in range(11)]
+    messages = [
+        ('/tf', stamp, tf_bytes(transform('a', 'b', stamp, (k, 0, 0))))
+        for k, stamp in enumerate(stamps)
+    ]
+    messages.append(('/tf', T0 + 2 * SECOND, b'\x00\x01\x00\x00\xff\xff\xff\x7f'))
+    bag = write_bag(tmp_path / 'damaged', 'sqlite3', messages)
+    assert main(['--bag', str(bag), 'a', 'b', '10']) == 1
+    captured = capsys.readouterr()
+    assert captured.out.count('- Translation: [') == 11  # up to the last good message
+    assert 'Lookup would require extrapolation' not in captured.out
+    errors = captured.err.splitlines()
+    assert len(errors) == 1
+    assert errors[0].startswith(f'tf2_echo: error: {bag}: message on /tf at bag time 1700000002')
+    assert errors[0].endswith('(the output used what came before it)')

@@ -17,14 +17,26 @@ Recorded TF: /tf and /tf_static from rosbag2 recordings (MCAP or SQLite3), witho
 
 :func:`open_tf_bag` streams a bag's TF messages in recording order (rosbags reads the container,
 this package's CDR decoder the payloads); :func:`load_buffer` fills a
-:class:`~tf_demo.core.BufferCore` from one. Needs the ``bag`` extra (``pip install '.[bag]'``).
+:class:`~tf_demo.core.BufferCore` from one, and :func:`load_bag` also keeps what precedes damage.
+Needs the ``bag`` extra (``pip install '.[bag]'``).
 """
 
 from tf_demo.bag.reader import BagError
 from tf_demo.bag.reader import BagRecord
+from tf_demo.bag.reader import load_bag
 from tf_demo.bag.reader import load_buffer
+from tf_demo.bag.reader import LoadedBag
 from tf_demo.bag.reader import open_tf_bag
 from tf_demo.bag.reader import TfBag
 from tf_demo.bag.writer import TfBagWriter
 
-__all__ = ['BagError', 'BagRecord', 'TfBag', 'TfBagWriter', 'load_buffer', 'open_tf_bag']
+__all__ = [
+    'BagError',
+    'BagRecord',
+    'LoadedBag',
+    'TfBag',
+    'TfBagWriter',
+    'load_bag',
+    'load_buffer',
+    'open_tf_bag',
+]

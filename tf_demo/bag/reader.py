@@ -182,6 +182,55 @@ def open_tf_bag(
     return TfBag(bag, reader, connections, static_topic)
 
 
+@dataclass(frozen=True)
+class LoadedBag:
+    """A bag read into a buffer: up to its end, or up to the damage that stopped the reading."""
+
+    core: BufferCore
+    start_ns: int
+    end_ns: int
+    """The bag's end, or the last message read before the damage."""
+    damage: BagError | None
+    """What stopped the reading early (None: the whole bag was read)."""
+
+
+def load_bag(
+    path: str | Path,
+    cache_time_ns: int | None = None,
+    tf_topic: str = DEFAULT_TF_TOPIC,
+    static_topic: str = DEFAULT_STATIC_TOPIC,
+) -> LoadedBag:
+    """
+    Read every transform of the bag into a new :class:`BufferCore`, keeping what precedes damage.
+
+    Static transforms count from the bag's start whenever they were recorded (tf2 treats them as
+    valid at all times). ``cache_time_ns`` defaults to the whole recording. Transforms tf2
+    refuses (NaN, an empty frame id) are skipped, as a listener skips them. A damaged chunk or
+    an undecodable message ends the reading: everything before it is kept and the error is
+    :attr:`LoadedBag.damage`.
+
+    :raises BagError: for a bag that cannot be opened (:func:`open_tf_bag`).
+    """
+    with open_tf_bag(path, tf_topic, static_topic) as bag:
+        span = bag.end_ns - bag.start_ns + _CACHE_MARGIN_NS
+        core = BufferCore(cache_time_ns if cache_time_ns is not None else span, log=_quiet)
+        insert = core.set_transform
+        authority = f'bag {bag.path.name}'
+        last_ns = bag.start_ns
+        try:
+            for record in bag.records():
+                last_ns = record.bag_time_ns
+                for parent, child, stamp_ns, translation, rotation in record.transforms:
+                    try:
+                        insert(parent, child, stamp_ns, translation, rotation, authority,
+                               record.is_static)  # fmt: skip
+                    except Exception:
+                        continue
+        except BagError as damage:
+            return LoadedBag(core, bag.start_ns, last_ns, damage)
+        return LoadedBag(core, bag.start_ns, bag.end_ns, None)
+
+
 def load_buffer(
     path: str | Path,
     cache_time_ns: int | None = None,
@@ -189,27 +238,15 @@ def load_buffer(
     static_topic: str = DEFAULT_STATIC_TOPIC,
 ) -> BufferCore:
     """
-    Return a :class:`BufferCore` holding every transform of the bag.
+    Return a :class:`BufferCore` holding every transform of the bag (see :func:`load_bag`).
 
-    Static transforms count from the bag's start whenever they were recorded (tf2 treats them as
-    valid at all times). ``cache_time_ns`` defaults to the whole recording. Transforms tf2
-    refuses (NaN, an empty frame id) are skipped, as a listener skips them.
-
-    :raises BagError: as :func:`open_tf_bag` and :meth:`TfBag.records`.
+    :raises BagError: as :func:`open_tf_bag`, and for a damaged bag (:func:`load_bag` keeps
+        what came before the damage).
     """
-    with open_tf_bag(path, tf_topic, static_topic) as bag:
-        span = bag.end_ns - bag.start_ns + _CACHE_MARGIN_NS
-        core = BufferCore(cache_time_ns if cache_time_ns is not None else span, log=_quiet)
-        insert = core.set_transform
-        authority = f'bag {bag.path.name}'
-        for record in bag.records():
-            for parent, child, stamp_ns, translation, rotation in record.transforms:
-                try:
-                    insert(parent, child, stamp_ns, translation, rotation, authority,
-                           record.is_static)  # fmt: skip
-                except Exception:
-                    continue
-    return core
+    loaded = load_bag(path, cache_time_ns, tf_topic, static_topic)
+    if loaded.damage is not None:
+        raise loaded.damage
+    return loaded.core
 
 
 def _seconds(stamp_ns: int) -> str:

@@ -190,6 +190,18 @@ def log_unnamed(severity_name: str, text: str) -> None:
     print(line, file=sys.stderr, flush=True)
 
 
+def finish_after_damage(tool: str, code: int, damage: Exception | None) -> int:
+    """
+    Return ``code``, or after a damaged bag's one-line error at least 1.
+
+    The tool's output, printed before, used what came before the damage.
+    """
+    if damage is None:
+        return code
+    print_error(tool, f'{damage} (the output used what came before it)')
+    return max(code, 1)
+
+
 class ToolError(Exception):
     """A problem the tool reports as one line on stderr before exiting with code 1."""
 

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from tf_demo.cli._snapshot import Snapshot
 from tf_demo.core.buffer_core import BufferCore
@@ -35,6 +36,9 @@ from tf_demo.core.math3d import Vec3
 TF_TOPIC = '/tf'
 TF_STATIC_TOPIC = '/tf_static'
 RECORDER_AUTHORITY = 'default_authority'
+
+if TYPE_CHECKING:
+    from tf_demo.bag import BagError
 
 
 @dataclass(frozen=True)
@@ -78,28 +82,42 @@ def observations_from_snapshot(snapshot: Snapshot) -> list[Observation]:
     ]
 
 
+@dataclass(frozen=True)
+class BagObservations:
+    """A bag's TF messages as observations, up to its end or to the damage that stopped them."""
+
+    observations: list[Observation]
+    start_ns: int
+    end_ns: int
+    """The bag's end, or the last message read before the damage."""
+    damage: BagError | None
+
+
 def observations_from_bag(
     path: str, tf_topic: str = TF_TOPIC, static_topic: str = TF_STATIC_TOPIC
-) -> tuple[list[Observation], int, int]:
+) -> BagObservations:
     """
     Read a rosbag2's TF messages as observations received at their bag times.
 
-    :returns: the observations (topics named ``/tf`` and ``/tf_static`` whatever they were
-        recorded as), the bag's start and its end (receive times, ns).
-    :raises tf_demo.bag.BagError: for a bag that cannot be read (one line naming it).
+    The topics are named ``/tf`` and ``/tf_static`` whatever they were recorded as. A damaged
+    bag gives what came before the damage, and the damage.
+
+    :raises tf_demo.bag.BagError: for a bag that cannot be opened (one line naming it).
     """
+    from tf_demo.bag import BagError
     from tf_demo.bag import open_tf_bag
 
+    observations: list[Observation] = []
     with open_tf_bag(path, tf_topic, static_topic) as bag:
-        observations = [
-            Observation(
-                TF_STATIC_TOPIC if record.is_static else TF_TOPIC,
-                record.bag_time_ns,
-                tuple(ObservedTransform(*transform) for transform in record.transforms),
-            )
-            for record in bag.records()
-        ]
-        return observations, bag.start_ns, bag.end_ns
+        try:
+            for record in bag.records():
+                topic = TF_STATIC_TOPIC if record.is_static else TF_TOPIC
+                transforms = tuple(ObservedTransform(*t) for t in record.transforms)
+                observations.append(Observation(topic, record.bag_time_ns, transforms))
+        except BagError as damage:
+            end_ns = observations[-1].receive_ns if observations else bag.start_ns
+            return BagObservations(observations, bag.start_ns, end_ns, damage)
+        return BagObservations(observations, bag.start_ns, bag.end_ns, None)
 
 
 def add_observation(

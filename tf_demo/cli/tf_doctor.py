@@ -47,6 +47,7 @@ from tf_demo.cli._doctor_report import format_report_json
 from tf_demo.cli._doctor_report import summarize
 from tf_demo.cli._doctor_robot import RobotInfo
 from tf_demo.cli._doctor_robot import RobotJoint
+from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import tool_main
@@ -240,10 +241,15 @@ def _report_snapshot(options: argparse.Namespace, snapshot: Snapshot) -> int:
 
 def _report_bag(options: argparse.Namespace) -> int:
     """Diagnose the ``--bag`` recording: every check, timing included, over the bag's span."""
-    observations, start_ns, end_ns = observations_from_bag(options.bag)
-    return _report(
-        options, observations, options.bag, timing=True, listen_ns=max(end_ns - start_ns, 1)
+    bag = observations_from_bag(options.bag)
+    code = _report(
+        options,
+        bag.observations,
+        options.bag,
+        timing=True,
+        listen_ns=max(bag.end_ns - bag.start_ns, 1),
     )
+    return finish_after_damage(TOOL, code, bag.damage)
 
 
 def main(args: list[str] | None = None) -> int:

@@ -39,6 +39,7 @@ import time
 
 from tf_demo.cli._args import EchoArgs
 from tf_demo.cli._args import parse_echo_args
+from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import run_tool
 from tf_demo.cli.formatting import ECHO_USAGE
 from tf_demo.cli.formatting import format_echo_failure
@@ -144,18 +145,16 @@ def _bag_instants(options: EchoArgs, start_ns: int, end_ns: int) -> range:
 
 def _echo_bag(options: EchoArgs) -> int:
     from tf_demo.bag import BagError
-    from tf_demo.bag import load_buffer
-    from tf_demo.bag import open_tf_bag
+    from tf_demo.bag import load_bag
     from tf_demo.core.exceptions import TransformException
 
     assert options.bag is not None
     try:
-        with open_tf_bag(options.bag) as bag:
-            start_ns, end_ns = bag.start_ns, bag.end_ns
-        core = load_buffer(options.bag)
+        loaded = load_bag(options.bag)
     except BagError as error:
         print(f'{TOOL}: {error}', file=sys.stderr, flush=True)
         return 1
+    core, start_ns, end_ns = loaded.core, loaded.start_ns, loaded.end_ns
     printed = 0
     for instant in _bag_instants(options, start_ns, end_ns):
         try:
@@ -172,7 +171,7 @@ def _echo_bag(options: EchoArgs) -> int:
         printed += 1
         if options.limit is not None and printed >= options.limit:
             break
-    return 0
+    return finish_after_damage(TOOL, 0, loaded.damage)
 
 
 def main(args: list[str] | None = None) -> int:

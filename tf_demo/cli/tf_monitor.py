@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING
 
 from tf_demo import transport
 from tf_demo.cli._args import count_argument
+from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import log_unnamed
 from tf_demo.cli._live import print_error
 from tf_demo.cli._live import run_tool
@@ -173,7 +174,8 @@ def _monitor_bag(options: argparse.Namespace) -> int:
     Messages count as received at their bag times, so rates and delays are the recording's; a
     report is printed every ``--interval`` seconds of bag time and one at the end.
     """
-    observations, start_ns, end_ns = observations_from_bag(options.bag)
+    bag = observations_from_bag(options.bag)
+    observations, start_ns, end_ns = bag.observations, bag.start_ns, bag.end_ns
     stats = DelayStats()
     core = BufferCore(end_ns - start_ns + 10**10, log=quiet_log)
     frames: list[str] = options.frames
@@ -213,14 +215,14 @@ def _monitor_bag(options: argparse.Namespace) -> int:
                 reports += 1
                 next_report += report_ns
                 if options.limit is not None and reports >= options.limit:
-                    return 0
+                    return finish_after_damage('tf_monitor', 0, bag.damage)
             next_tick += tick_ns
         if observation is not None:
             stats.add(observation, receive_ns / 1e9)
             add_observation(core, observation)
     if next_report - report_ns < end_ns or reports == 0:  # what came after the last report
         _print_report(frames, chain, avg_diff, max_diff, stats)
-    return 0
+    return finish_after_damage('tf_monitor', 0, bag.damage)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -32,6 +32,7 @@ from pathlib import Path
 import sys
 from typing import Any
 
+from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import tool_main
@@ -96,15 +97,13 @@ def _track(core: BufferCore, options: argparse.Namespace, start_ns: int, end_ns:
 
 
 def _plot_bag(options: argparse.Namespace) -> int:
-    from tf_demo.bag import load_buffer
-    from tf_demo.bag import open_tf_bag
+    from tf_demo.bag import load_bag
 
     _require_matplotlib()
-    with open_tf_bag(options.bag, options.tf_topic, options.tf_static_topic) as bag:
-        start_ns, end_ns = bag.start_ns, bag.end_ns
-    core = load_buffer(options.bag, None, options.tf_topic, options.tf_static_topic)
-    track = _track(core, options, start_ns, end_ns)
-    return _write_plot(track, options.output, f'bag {Path(options.bag).name}')
+    loaded = load_bag(options.bag, None, options.tf_topic, options.tf_static_topic)
+    track = _track(loaded.core, options, loaded.start_ns, loaded.end_ns)
+    code = _write_plot(track, options.output, f'bag {Path(options.bag).name}')
+    return finish_after_damage(TOOL, code, loaded.damage)
 
 
 def _plot_live(options: argparse.Namespace) -> int:

@@ -33,6 +33,7 @@ import time
 from typing import Protocol
 
 from tf_demo.cli._args import wait_time_error
+from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import tool_main
@@ -166,12 +167,12 @@ def _draw_snapshot(options: argparse.Namespace, snapshot: Snapshot) -> int:
 
 def _draw_bag(options: argparse.Namespace) -> int:
     """Draw the ``--bag`` recording's tree as it stands at the bag's end (rates from the bag)."""
-    observations, start_ns, end_ns = observations_from_bag(
-        options.bag, options.tf_topic, options.tf_static_topic
-    )
-    core = buffer_from_observations(observations, cache_time_ns=end_ns - start_ns + 10**10)
-    data = yaml.safe_load(core.all_frames_as_yaml(end_ns))
-    return write_graph(_StderrLogger(), data, divmod(end_ns, 1_000_000_000), options.output)
+    bag = observations_from_bag(options.bag, options.tf_topic, options.tf_static_topic)
+    cache_ns = bag.end_ns - bag.start_ns + 10**10
+    core = buffer_from_observations(bag.observations, cache_time_ns=cache_ns)
+    data = yaml.safe_load(core.all_frames_as_yaml(bag.end_ns))
+    code = write_graph(_StderrLogger(), data, divmod(bag.end_ns, 1_000_000_000), options.output)
+    return finish_after_damage(TOOL, code, bag.damage)
 
 
 def main(args: list[str] | None = None) -> int:
