@@ -72,6 +72,54 @@ def test_stopped_stream():
     assert 'stopped arriving 3.000 s' in finding.message
 
 
+def test_timing_findings_say_when_they_happen():
+    """Each timing finding carries the reception time where it shows first."""
+    stopped = stream('odom', 'base_link', seconds=1.0)  # last at 0.95 s (+1 ms delay)
+    finding = next(
+        f for f in diagnose(stopped + stream('map', 'odom', seconds=4.0)) if f.kind == 'stopped'
+    )
+    assert finding.at_ns == T0 + 950_000_000 + 1_000_000
+    slow = stream('odom', 'base_link', rate_hz=1.0, seconds=4.0)
+    sparse = next(f for f in diagnose(slow) if f.kind == 'sparse_data')
+    assert sparse.at_ns == T0 + 1_000_000  # the first of the equally wide gaps
+
+
+def shifted(observations: list[Observation], back_ns: int) -> list[Observation]:
+    """The same messages received later, their stamps ``back_ns`` earlier (a clock reset)."""
+    result = []
+    for observation in observations:
+        (transform,) = observation.transforms
+        moved = ObservedTransform(transform.parent, transform.child, transform.stamp_ns - back_ns,
+                                  transform.translation)  # fmt: skip
+        result.append(Observation(TF_TOPIC, observation.receive_ns + 2 * S, (moved,)))
+    return result
+
+
+def test_stamps_going_back_once_are_a_clock_jump_or_a_regression():
+    """A reset by 5 s is a clock jump; a step back by 10 ms twice a stamp regression; with
+    its time. Three or more steps back stay publishers fighting."""
+    first = stream('odom', 'base_link', seconds=2.0)
+    jumped = first + shifted(first, 5 * S)  # from 1.95 s back to -5 s
+    (finding,) = [f for f in diagnose(jumped) if f.kind == 'clock_jump']
+    assert 'jumped back by 6.950 s' in finding.message
+    assert finding.at_ns == T0 + 2 * S + 1_000_000
+    assert 'stamp_regression' not in kinds(diagnose(jumped))
+    wobbly = stream('odom', 'base_link', seconds=2.0)
+    for index in (10, 30):  # two messages stamped 10 ms before the one before them
+        (transform,) = wobbly[index].transforms
+        early = ObservedTransform(
+            'odom',
+            'base_link',
+            wobbly[index - 1].transforms[0].stamp_ns - 10_000_000,
+            transform.translation,
+        )
+        wobbly[index] = Observation(TF_TOPIC, wobbly[index].receive_ns, (early,))
+    (finding,) = [f for f in diagnose(wobbly) if f.kind == 'stamp_regression']
+    assert 'went backwards 2 times (by up to' in finding.message
+    assert finding.at_ns == wobbly[10].receive_ns
+    assert 'clock_jump' not in kinds(diagnose(wobbly))
+
+
 def test_a_fixed_mount_sent_repeatedly_on_tf_belongs_on_tf_static():
     """Not 'publish faster': a transform that never changes is published once on /tf_static."""
     observations = [

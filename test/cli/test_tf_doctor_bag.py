@@ -60,6 +60,39 @@ def test_a_recording_gets_every_check(tmp_path: Path, capsys: pytest.CaptureFixt
     assert 'odom→base_link stopped arriving 5.050 s before the end of the recording' in out
     assert 'map→beacon arrives at 1 Hz, with gaps up to 1.000 s' in out
     assert '[disconnected]' in out
+    # when, in bag time: the last message of the stopped stream, the first of the sparse one
+    stopped = out.split('[stopped]', 1)[1].split('Fix:', 1)[0]
+    assert '  At: bag time 1700000004.950 s (4.950 s in)' in stopped
+    sparse = out.split('[sparse_data]', 1)[1].split('Fix:', 1)[0]
+    assert '  At: bag time 1700000000.000 s (0.000 s in)' in sparse
+
+
+def test_a_clock_reset_in_a_recording_is_found_with_its_time(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A simulation restarted 3 s into the recording: its stamps start again from 0."""
+    messages = []
+    for k in range(100):  # 5 s at 20 Hz; at 3 s the publisher's clock restarts at 100 s
+        bag_time = T0 + k * SECOND // 20
+        stamp = (
+            100 * SECOND + (k - 60) * SECOND // 20 if k >= 60 else 200 * SECOND + k * SECOND // 20
+        )
+        messages.append(
+            ('/tf', bag_time, tf_bytes(transform('odom', 'base_link', stamp, (k, 0, 0))))
+        )
+    path = write_bag(tmp_path / 'reset', 'mcap', messages)
+    main(['--bag', str(path)])
+    out = capsys.readouterr().out
+    jump = out.split('[clock_jump]', 1)[1].split('Fix:', 1)[0]
+    assert 'jumped back by 102.950 s' in ' '.join(jump.split())
+    assert '  At: bag time 1700000003.000 s (3.000 s in)' in jump
+    assert main(['--bag', str(path), '--json']) in {0, 1}
+    import json
+
+    (finding,) = [
+        f for f in json.loads(capsys.readouterr().out)['findings'] if f['kind'] == 'clock_jump'
+    ]
+    assert finding['at_s'] == 1_700_000_003.0
 
 
 def test_json_and_a_bad_bag(tmp_path: Path, capsys: pytest.CaptureFixture[str]):

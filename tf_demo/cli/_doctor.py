@@ -46,6 +46,7 @@ from tf_demo.cli._doctor_robot import links_without_joint_positions
 from tf_demo.cli._doctor_robot import missing_frames
 from tf_demo.cli._doctor_robot import MOVING_JOINT_TYPES
 from tf_demo.cli._doctor_robot import RobotInfo
+from tf_demo.cli._doctor_timing import stamps_went_back
 from tf_demo.cli._doctor_timing import stopped
 from tf_demo.cli._doctor_timing import timing
 from tf_demo.cli._doctor_tree import disconnected
@@ -120,6 +121,7 @@ def diagnose(
         moving = {j.child for j in (robot.joints if robot else ()) if j.type in MOVING_JOINT_TYPES}
         findings.extend(timing(stats, listen_ns, limits, moving))
         findings.extend(stopped(stats, max(o.receive_ns for o in observations)))
+        findings.extend(stamps_went_back(stats, limits))
         if not any(f.kind in ('missing_frame', 'disconnected', 'loop') for f in findings):
             findings.extend(_lookups(observations, frames))
     order = {'error': 0, 'warning': 1, 'info': 2}
@@ -228,6 +230,7 @@ def _parent_conflicts(stats: dict[str, FrameStats], limits: Thresholds) -> list[
                 evidence.append(f'its value jumped back and forth {flips} times')
             if regressions >= 3:
                 evidence.append(f'its stamps went backwards {regressions} times')
+            first_back = (b[0] for a, b in itertools.pairwise(entry.dynamic) if b[1] < a[1])
             findings.append(
                 Finding(
                     'publishers_fighting',
@@ -239,6 +242,7 @@ def _parent_conflicts(stats: dict[str, FrameStats], limits: Thresholds) -> list[
                     f"Keep a single publisher for '{child}' (for example do not run both "
                     'robot_state_publisher and another broadcaster for the same joint, or two '
                     'odometry sources with publish_tf enabled).',
+                    next(first_back, entry.dynamic[0][0] if entry.dynamic else None),
                 )
             )
     return findings

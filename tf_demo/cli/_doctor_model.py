@@ -44,6 +44,8 @@ class Thresholds:
     max_gap_s: float = 0.5
     """A dynamic frame whose stamps are typically further apart is sparse (< 2 Hz)."""
     value_tolerance: float = 1e-9
+    clock_jump_s: float = 1.0
+    """Stamps stepping back further than this are a clock jump, not a stamp regression."""
 
 
 @dataclass(frozen=True)
@@ -55,6 +57,8 @@ class Finding:
     frames: tuple[str, ...]
     message: str
     fix: str
+    at_ns: int | None = None
+    """When it shows first (a reception time: bag time in a recording), if it has a time."""
 
 
 @dataclass

@@ -61,8 +61,23 @@ def _wrapped(text: str, first: str, indent: str, width: int = 99) -> list[str]:
     return lines
 
 
-def format_report(findings: Sequence[Finding], summary: dict[str, int], source: str) -> str:
-    """Format the plain-language report: each finding with its fix, then the verdict."""
+def bag_time(at_ns: int, start_ns: int) -> str:
+    """Say when ``at_ns`` is: the bag time, and how far into the recording."""
+    sec, nanosec = divmod(at_ns, 1_000_000_000)
+    return f'bag time {sec}.{nanosec // 1_000_000:03d} s ({(at_ns - start_ns) / 1e9:.3f} s in)'
+
+
+def format_report(
+    findings: Sequence[Finding],
+    summary: dict[str, int],
+    source: str,
+    start_ns: int | None = None,
+) -> str:
+    """
+    Format the plain-language report: each finding with its fix, then the verdict.
+
+    With ``start_ns`` (a recording's start) a finding with a time says when, in bag time.
+    """
     lines = [
         f'tf_doctor: {source}: {summary["messages"]} messages, {summary["frames"]} frames, '
         f'{summary["trees"]} tree{"s" if summary["trees"] != 1 else ""}.'
@@ -72,6 +87,8 @@ def format_report(findings: Sequence[Finding], summary: dict[str, int], source: 
         lines.extend(
             _wrapped(finding.message, f'{finding.severity.upper()} [{finding.kind}] ', '    ')
         )
+        if start_ns is not None and finding.at_ns is not None:
+            lines.append(f'  At: {bag_time(finding.at_ns, start_ns)}')
         lines.extend(_wrapped(finding.fix, '  Fix: ', '    '))
     problems = [f for f in findings if f.severity != 'info']
     lines.append('')
@@ -102,6 +119,7 @@ def format_report_json(findings: Sequence[Finding], summary: dict[str, int], sou
                         'frames': list(f.frames),
                         'message': f.message,
                         'fix': f.fix,
+                        'at_s': None if f.at_ns is None else f.at_ns / 1e9,
                     }
                     for f in findings
                 ],

@@ -73,6 +73,7 @@ def timing(
                     'extrapolation error.',
                     'Stamp each transform with the node clock (node.get_clock().now()), or '
                     'publish it on /tf_static if it never moves.',
+                    samples[0][0],
                 )
             )
             continue
@@ -88,6 +89,7 @@ def timing(
                     'The publisher and listeners use different clocks: check use_sim_time (all '
                     'nodes true with a /clock source, or all false) and synchronize machine '
                     'clocks (chrony/NTP).',
+                    samples[0][0],
                 )
             )
         elif median_offset > limits.old_tolerance_s * NS_PER_S:
@@ -108,6 +110,7 @@ def timing(
                     'Check use_sim_time: a publisher on sim time and a listener on wall time (or '
                     'the reverse) disagree by years; otherwise synchronize clocks or fix the '
                     "publisher's stamping.",
+                    samples[0][0],
                 )
             )
         stamps = sorted({stamp for _, stamp, _, _ in samples})
@@ -132,11 +135,14 @@ def timing(
                     'at any other time fail with extrapolation errors.',
                     'Publish moving frames continuously (10 Hz or more), or publish a fixed '
                     'transform once on /tf_static.',
+                    samples[0][0],
                 )
             )
             continue
         if gaps and statistics.median(gaps) > limits.max_gap_s * NS_PER_S:
             rate = (len(stamps) - 1) / ((stamps[-1] - stamps[0]) / NS_PER_S)
+            widest = stamps[max(range(len(gaps)), key=gaps.__getitem__)]
+            gap_at = next(receive for receive, stamp, _, _ in samples if stamp == widest)
             findings.append(
                 Finding(
                     'sparse_data',
@@ -147,6 +153,7 @@ def timing(
                     'and will extrapolate into the future for up to that long.',
                     'Publish faster, look up at time 0 (latest available) or with a timeout, or '
                     'interpolate at the stamp of the data you transform.',
+                    gap_at,
                 )
             )
     return findings
@@ -181,6 +188,7 @@ def _fixed_mount_on_tf(
         'Publish a fixed mount once on /tf_static instead (static_transform_publisher, a '
         'StaticTransformBroadcaster, or a fixed joint in the URDF): lookups then succeed at any '
         'time. If this frame really moves and only stood still, ignore this.',
+        samples[0][0],
     )
 
 
@@ -205,6 +213,55 @@ def stopped(stats: dict[str, FrameStats], end_ns: int) -> list[Finding]:
                     f'{seconds(period)} before). Lookups at later times will fail with '
                     'extrapolation errors.',
                     'Check that its publisher is still running and not blocked.',
+                    receives[-1],
+                )
+            )
+    return findings
+
+
+def stamps_went_back(stats: dict[str, FrameStats], limits: Thresholds) -> list[Finding]:
+    """
+    Frames whose stamps went backwards once or twice (three times or more: fighting publishers).
+
+    A step back of more than ``limits.clock_jump_s`` is a clock jump (a simulation restarted,
+    ``/clock`` reset, a bag played again); a smaller one a stamp regression. Each finding
+    carries the time of the largest step.
+    """
+    findings = []
+    for child in sorted(stats):
+        samples = stats[child].dynamic
+        steps = [(a[1] - b[1], b[0]) for a, b in itertools.pairwise(samples) if b[1] < a[1]]
+        if not steps or len(steps) >= 3:
+            continue
+        back, at_ns = max(steps, key=lambda step: step[0])  # the first of the largest
+        parent = stats[child].latest_parent
+        if back > limits.clock_jump_s * NS_PER_S:
+            findings.append(
+                Finding(
+                    'clock_jump',
+                    'warning',
+                    (child,),
+                    f'The stamps of {parent}→{child} jumped back by {seconds(back)}: its '
+                    "publisher's clock was reset (a simulation restarted, /clock started over, "
+                    'a bag played again). Listeners whose own clock jumped back cleared their '
+                    'buffers; others keep the newer data and extrapolate until time catches up.',
+                    'Restart the nodes after resetting a simulation, or give every node the same '
+                    'clock (use_sim_time true everywhere with one /clock source).',
+                    at_ns,
+                )
+            )
+        else:
+            findings.append(
+                Finding(
+                    'stamp_regression',
+                    'warning',
+                    (child,),
+                    f'The stamps of {parent}→{child} went backwards {len(steps)} time'
+                    f'{"s" if len(steps) > 1 else ""} (by up to {seconds(back)}): a message was '
+                    'stamped earlier than the one before it.',
+                    'Stamp with a monotonic source (the node clock at publication), and do not '
+                    'reorder or re-send old transforms.',
+                    at_ns,
                 )
             )
     return findings

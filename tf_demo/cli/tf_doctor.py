@@ -95,6 +95,7 @@ def _report(
     listen_ns: int,
     unmatched: dict[str, int] | None = None,
     robot: RobotInfo | None = None,
+    start_ns: int | None = None,
 ) -> int:
     findings = diagnose(
         observations,
@@ -108,7 +109,7 @@ def _report(
     if options.json:
         sys.stdout.write(format_report_json(findings, summary, source))
     else:
-        sys.stdout.write(format_report(findings, summary, source))
+        sys.stdout.write(format_report(findings, summary, source, start_ns))
     sys.stdout.flush()
     return exit_code(findings)
 
@@ -248,6 +249,7 @@ def _report_bag(options: argparse.Namespace) -> int:
         options.bag,
         timing=True,
         listen_ns=max(bag.end_ns - bag.start_ns, 1),
+        start_ns=bag.start_ns,
     )
     return finish_after_damage(TOOL, code, bag.damage)
 
