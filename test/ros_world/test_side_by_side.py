@@ -1147,3 +1147,36 @@ def test_tf_topic_echo_prints_what_ros2_topic_echo_prints(tf2_ros_cpp: dict[str,
     assert ours.returncode == 0, ours.stderr
     assert 'child_frame_id: b' in ours.stdout
     assert ours.stdout == theirs.stdout
+
+
+#: One message each, sent again and again unchanged by ``ros2 topic pub`` (its YAML form).
+PUBLISHED = {
+    '/tf': (
+        'tf2_msgs/msg/TFMessage',
+        '{transforms: [{header: {stamp: {sec: 1700000000, nanosec: 250000000}, frame_id: odom}, '
+        'child_frame_id: base_link, transform: {translation: {x: 1.5, y: -0.25, z: 0.0}, '
+        'rotation: {x: 0.0, y: 0.0, z: 0.6, w: 0.8}}}, {header: {frame_id: base_link}, '
+        'child_frame_id: laser, transform: {rotation: {w: 1.0}}}]}',
+    ),
+    '/joint_states': (
+        'sensor_msgs/msg/JointState',
+        "{header: {stamp: {sec: 12, nanosec: 5}, frame_id: ''}, name: [joint_1, joint_2], "
+        'position: [0.5, -1.25], velocity: [0.0, 1.0e-9], effort: []}',
+    ),
+}
+
+
+@pytest.mark.parametrize('topic', sorted(PUBLISHED))
+def test_tf_topic_echo_prints_what_ros2_topic_echo_prints_for_tf_and_joint_states(
+    jazzy_env: dict[str, str], topic: str
+) -> None:
+    """``ros2 topic pub`` repeats one message: tf_topic's --once output is ros2 topic echo's."""
+    msgtype, message = PUBLISHED[topic]
+    publisher = ['ros2', 'topic', 'pub', '-r', '10', topic, msgtype, message]
+    with started(publisher, jazzy_env):
+        theirs = ros2(jazzy_env, 'topic', 'echo', '--once', topic, msgtype, timeout=60)
+        ours = run_captured(ours_run('tf_topic', 'echo', topic, '--once'), jazzy_env, timeout=60)
+    assert theirs.returncode == 0, theirs.stderr
+    assert ours.returncode == 0, ours.stderr
+    assert 'nanosec: ' in ours.stdout
+    assert ours.stdout == theirs.stdout
