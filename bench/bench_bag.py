@@ -21,6 +21,10 @@ REP-105-like set of frames at 100 Hz) with rosbags' writer, then times, in the s
 core) and, as the reference, rosbags' own ``deserialize_cdr`` of the same payloads with nothing
 inserted. Target (issue 14): at least 200,000 transforms/s into the core.
 
+Bounded memory: MCAP bags of ``--stream-mb`` sizes (default 64 and 256 MB; ``--stream-mb 1024``
+for the 1 GB of the issue) are streamed with ``TfBag.records()`` in a fresh process each, which
+prints its peak resident memory; the peak must not grow with the bag.
+
 Run: ``.venv/bin/python bench/bench_bag.py``.
 """
 
@@ -29,6 +33,7 @@ from __future__ import annotations
 import argparse
 import math
 from pathlib import Path
+import subprocess
 import sys
 import tempfile
 import time
@@ -64,10 +69,56 @@ def write(path: Path, storage: str, messages: int, transforms: int) -> None:
             writer.write(connection, stamp, encoder.encode(batch, sec, nanosec))
 
 
+#: Streams a bag in a fresh process and prints: records, transforms, peak RSS (KiB).
+_STREAM = """
+import resource, sys
+from tf_demo.bag import open_tf_bag
+records = transforms = 0
+with open_tf_bag(sys.argv[1]) as bag:
+    for record in bag.records():
+        records += 1
+        transforms += len(record.transforms)
+print(records, transforms, resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+"""
+
+
+def streamed_peak(path: Path) -> tuple[int, int, int, float]:
+    """Stream ``path`` in a new process: records, transforms, peak RSS (KiB), seconds."""
+    start = time.perf_counter()
+    completed = subprocess.run(
+        [sys.executable, '-c', _STREAM, str(path)],
+        capture_output=True, text=True, check=True,
+        cwd=Path(__file__).resolve().parent.parent,
+    )  # fmt: skip
+    records, transforms, peak = (int(v) for v in completed.stdout.split())
+    return records, transforms, peak, time.perf_counter() - start
+
+
+def bounded_memory(folder: Path, sizes_mb: list[int], transforms: int) -> None:
+    """Print the peak memory of streaming MCAP bags of ``sizes_mb``."""
+    bytes_per_message = 4 + transforms * 88  # the encoder's CDR for these frame names
+    print('streaming TfBag.records() (fresh process each):')
+    peaks = []
+    for size in sizes_mb:
+        path = folder / f'stream_{size}'
+        messages = size * 1024 * 1024 // bytes_per_message
+        write(path, 'mcap', messages, transforms)
+        on_disk = sum(f.stat().st_size for f in path.iterdir()) / 2**20
+        records, count, peak, seconds = streamed_peak(path)
+        peaks.append(peak)
+        print(
+            f'  {on_disk:7.0f} MiB bag, {records:,} messages, {count:,} transforms: peak RSS '
+            f'{peak / 1024:6.1f} MiB, {count / seconds:,.0f} transforms/s'
+        )
+    growth = peaks[-1] / peaks[0]
+    print(f'  peak RSS largest/smallest bag: {growth:.2f} (bounded: about 1)')
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
     parser.add_argument('--messages', type=int, default=4000)
     parser.add_argument('--transforms', type=int, default=50)
+    parser.add_argument('--stream-mb', type=int, nargs='*', default=[64, 256])
     options = parser.parse_args(argv)
     from rosbags.rosbag2 import Reader
     from rosbags.typesys import get_typestore
@@ -97,6 +148,8 @@ def main(argv: list[str] | None = None) -> int:
                 f"rosbags' deserialize_cdr alone {total / theirs:10,.0f}/s; "
                 f'ours/theirs time {ours / theirs:.2f}'
             )
+        if options.stream_mb:
+            bounded_memory(Path(folder), sorted(options.stream_mb), options.transforms)
     return 0
 
 
