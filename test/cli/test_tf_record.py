@@ -16,17 +16,33 @@
 
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 import signal
+import sqlite3
 from typing import Any
 
+from conftest import eventually
 from conftest import ProcessOutput
 import pytest
 from tf_demo.bag import load_buffer
+from tf_demo.bag import open_tf_bag
 from tf_demo.msgs.cdr import deserialize
 from tf_demo.msgs.tf2_msgs import TFMessage
 
 rosbag2 = pytest.importorskip('rosbags.rosbag2', reason="tf_record needs the 'bag' extra")
+
+
+def committed_messages(bag: Path) -> int:
+    """How many messages another reader sees in a SQLite3 bag being written (0 if none yet)."""
+    database = next(bag.glob('*.db3'), None)
+    if database is None:
+        return 0
+    with contextlib.closing(sqlite3.connect(f'file:{database}?mode=ro', uri=True)) as db:
+        try:
+            return int(db.execute('SELECT count(*) FROM messages').fetchone()[0])
+        except sqlite3.Error:  # the tables are not there yet, or a write is under way
+            return 0
 
 
 def test_a_recording_holds_the_live_tree(spawn: Any, tmp_path: Path) -> None:
@@ -72,6 +88,7 @@ def test_ctrl_c_closes_a_sqlite3_bag_cleanly(spawn: Any, tmp_path: Path) -> None
         spawn.start('tf_record', '-o', str(bag), '--storage', 'sqlite3', '--topics', '/tf')
     )
     record.wait_for_line('tf_record: recording /tf to ', timeout=60)
+    assert eventually(lambda: committed_messages(bag) > 0, 60, 0.05)
     record.process.send_signal(signal.SIGINT)
     assert record.process.wait(timeout=30) == 0
     assert record.wait_for_line('tf_record: ', timeout=5)
@@ -86,3 +103,50 @@ def test_an_existing_output_is_refused(spawn: Any, tmp_path: Path) -> None:
     _, err = process.communicate(timeout=60)
     assert process.returncode == 1
     assert err.strip().endswith('run: already exists (rosbag2 writes a new directory)')
+
+
+@pytest.mark.dds
+@pytest.mark.usefixtures('ros')
+def test_the_metadata_holds_the_qos_the_publishers_offer(
+    spawn: Any, nodes: Any, tmp_path: Path
+) -> None:
+    """A /joint_states publisher with depth 7 and a 2.5 s deadline: rosbag2's metadata says so."""
+    from tf_demo.transport.clock import Duration
+    from tf_demo.transport.messages import sensor_msgs
+    from tf_demo.transport.qos import QoSProfile
+
+    node = nodes.node('joint_source')
+    offered = QoSProfile(depth=7, deadline=Duration(seconds=2, nanoseconds=500_000_000))
+    publisher = node.create_publisher(sensor_msgs.JointState, '/joint_states', offered)
+    node.create_timer(0.05, lambda: publisher.publish(sensor_msgs.JointState(name=['j'])))
+    nodes.start()
+    bag = tmp_path / 'run'
+    record = spawn.start(
+        'tf_record', '-o', str(bag), '--duration', '3', '--topics', '/joint_states'
+    )
+    assert record.wait(timeout=60) == 0, record.communicate()
+    with rosbag2.Reader(bag) as reader:
+        (connection,) = reader.connections
+        profiles = connection.ext.offered_qos_profiles
+        count = sum(1 for _ in reader.messages())
+    assert count > 5
+    (profile,) = profiles
+    assert (profile.history.name, profile.depth) == ('KEEP_LAST', 7)
+    assert (profile.reliability.name, profile.durability.name) == ('RELIABLE', 'VOLATILE')
+    assert (profile.deadline.sec, profile.deadline.nsec) == (2, 500_000_000)
+    assert (profile.lifespan.sec, profile.lifespan.nsec) == (9223372036, 854775807)  # infinite
+
+
+def test_a_crash_leaves_what_was_committed_readable(spawn: Any, tmp_path: Path) -> None:
+    """SIGKILL while recording SQLite3: the .db3 left behind opens and holds the /tf so far."""
+    spawn.start('dynamic_tf_pub')
+    bag = tmp_path / 'run'
+    record = spawn.start('tf_record', '-o', str(bag), '--storage', 'sqlite3')
+    assert eventually(lambda: committed_messages(bag) >= 5, 60, 0.05)
+    record.kill()
+    record.wait(timeout=30)
+    assert not (bag / 'metadata.yaml').exists()  # it never closed
+    with open_tf_bag(next(bag.glob('*.db3'))) as crashed:
+        records = list(crashed.records())
+    assert len(records) >= 5
+    assert {t[1] for r in records for t in r.transforms} == {'base_link'}

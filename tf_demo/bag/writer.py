@@ -16,14 +16,18 @@
 Writing TF recordings: a rosbag2 that ROS 2's own tools open (MCAP by default, or SQLite3).
 
 Messages arrive serialised (CDR, as received) and are written with their receive times; each
-topic's connection carries its type name, ``cdr`` and the QoS its publishers offer as tf2 and
-ROS 2 define them for these topics (``/tf_static`` and ``/robot_description`` latched). Every
-message is written as it arrives, so a crash leaves what was written readable as far as the
-storage allows (SQLite3 commits each message; MCAP needs its summary, written on close).
+topic's connection, made when its first message arrives (as rosbag2 makes it when it meets the
+topic's publishers), carries its type name, ``cdr`` and the QoS profiles its publishers offer
+(given by the caller from the graph; tf2's and ROS 2's for these topics when none is known:
+``/tf_static`` and ``/robot_description`` latched). Every message is written as it arrives;
+:meth:`TfBagWriter.flush` commits SQLite3's transaction (rosbags commits only on close), so a
+crash loses only what came after the last flush. An MCAP file needs its summary, written on
+close.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -41,6 +45,10 @@ TOPIC_TYPES = {
 STORAGES = ('mcap', 'sqlite3')
 
 
+#: ``RMW_DURATION_INFINITE`` as rosbag2 writes it (seconds, nanoseconds).
+_INFINITE = (9223372036, 854775807)
+
+
 def _offered_qos(latched: bool, depth: int) -> Any:
     """Return the rosbags QoS of a reliable publisher (transient local when ``latched``)."""
     from rosbags.interfaces import Qos
@@ -50,12 +58,48 @@ def _offered_qos(latched: bool, depth: int) -> Any:
     from rosbags.interfaces import QosReliability
     from rosbags.interfaces import QosTime
 
-    infinite = QosTime(0x7FFFFFFF, 0xFFFFFFFF)
+    infinite = QosTime(*_INFINITE)
     durability = QosDurability.TRANSIENT_LOCAL if latched else QosDurability.VOLATILE
     return Qos(
         QosHistory.KEEP_LAST, depth, QosReliability.RELIABLE, durability, infinite,
         infinite, QosLiveliness.AUTOMATIC, infinite, False,
     )  # fmt: skip
+
+
+def rosbags_qos(profile: Any) -> Any:
+    """
+    Return a ROS ``QoSProfile`` (rclpy's or this package's) as rosbags' ``Qos`` for metadata.
+
+    Policies go by their names; a duration by its nanoseconds (zero or more than
+    ``RMW_DURATION_INFINITE``: infinite, as rosbag2 writes it).
+    """
+    from rosbags.interfaces import Qos
+    from rosbags.interfaces import QosDurability
+    from rosbags.interfaces import QosHistory
+    from rosbags.interfaces import QosLiveliness
+    from rosbags.interfaces import QosReliability
+    from rosbags.interfaces import QosTime
+
+    def policy(kind: Any, value: object) -> Any:
+        name = str(getattr(value, 'name', value)).upper()
+        return getattr(kind, name, kind.SYSTEM_DEFAULT)
+
+    def duration(value: object) -> Any:
+        nanoseconds = int(getattr(value, 'nanoseconds', 0) or 0)
+        infinite = nanoseconds <= 0 or nanoseconds >= _INFINITE[0] * 10**9 + _INFINITE[1]
+        return QosTime(*(_INFINITE if infinite else divmod(nanoseconds, 1_000_000_000)))
+
+    return Qos(
+        policy(QosHistory, profile.history),
+        int(profile.depth),
+        policy(QosReliability, profile.reliability),
+        policy(QosDurability, profile.durability),
+        duration(getattr(profile, 'deadline', None)),
+        duration(getattr(profile, 'lifespan', None)),
+        policy(QosLiveliness, getattr(profile, 'liveliness', 'AUTOMATIC')),
+        duration(getattr(profile, 'liveliness_lease_duration', None)),
+        bool(getattr(profile, 'avoid_ros_namespace_conventions', False)),
+    )
 
 
 class TfBagWriter(ClosesOnExit):
@@ -78,25 +122,46 @@ class TfBagWriter(ClosesOnExit):
         if self.path.exists():
             raise BagError(f'{self.path}: already exists (rosbag2 writes a new directory)')
         plugin = StoragePlugin.MCAP if storage == 'mcap' else StoragePlugin.SQLITE3
-        store = get_typestore(Stores.ROS2_JAZZY)
+        self._store = get_typestore(Stores.ROS2_JAZZY)
+        self.topics = list(topics)
         try:
             self._writer = Writer(self.path, version=9, storage_plugin=plugin)
             self._writer.open()
-            self._connections = {}
-            for topic in topics:
-                msgtype, latched, depth = TOPIC_TYPES[topic]
-                self._connections[topic] = self._writer.add_connection(
-                    topic, msgtype, typestore=store, serialization_format='cdr',
-                    offered_qos_profiles=[_offered_qos(latched, depth)],
-                )  # fmt: skip
         except Exception as error:  # rosbags' WriterError, OSError ...
             raise BagError(f'{self.path}: cannot write a bag here: {error}') from None
+        self._connections: dict[str, Any] = {}
         self.count = 0
 
-    def write(self, topic: str, receive_ns: int, data: bytes) -> None:
-        """Write one serialised message of ``topic`` received at ``receive_ns``."""
-        self._writer.write(self._connections[topic], receive_ns, data)
+    def write(
+        self, topic: str, receive_ns: int, data: bytes, offered_qos: Sequence[Any] = ()
+    ) -> None:
+        """
+        Write one serialised message of ``topic`` received at ``receive_ns``.
+
+        ``offered_qos``: the ``QoSProfile`` of each of the topic's publishers, used when this is
+        the topic's first message (none: tf2's and ROS 2's profile for the topic).
+        """
+        connection = self._connections.get(topic) or self.add_topic(topic, offered_qos)
+        self._writer.write(connection, receive_ns, data)
         self.count += 1
+
+    def flush(self) -> None:
+        """Make what was written so far survive a crash (SQLite3: commit; MCAP: nothing to do)."""
+        connection = getattr(getattr(self._writer, 'storage', None), 'conn', None)
+        if connection is not None:  # rosbags' Sqlite3Writer keeps one open transaction
+            connection.commit()
+
+    def add_topic(self, topic: str, offered_qos: Sequence[Any] = ()) -> Any:
+        """Add ``topic``'s connection now (once; see :meth:`write` for ``offered_qos``)."""
+        connection = self._connections.get(topic)
+        if connection is None:
+            msgtype, latched, depth = TOPIC_TYPES[topic]
+            profiles = [rosbags_qos(p) for p in offered_qos] or [_offered_qos(latched, depth)]
+            connection = self._connections[topic] = self._writer.add_connection(
+                topic, msgtype, typestore=self._store, serialization_format='cdr',
+                offered_qos_profiles=profiles,
+            )  # fmt: skip
+        return connection
 
     def close(self) -> None:
         """Finish the bag (its metadata and, for MCAP, the summary)."""

@@ -17,10 +17,12 @@
 
 Records ``/tf`` and ``/tf_static`` (and, when asked, ``/joint_states``, ``/robot_description``,
 ``/clock``) from the live network, in either world, into a new rosbag2 that ROS 2's tools open:
-MCAP by default, the topics' type names, ``cdr`` and the QoS their publishers offer in the
-metadata. Messages are written as received (serialised, untouched) with the node clock's time.
-``/tf_static`` and ``/robot_description`` are subscribed latched, so what was published before
-the recording started is in it. Ctrl-C or ``--duration`` closes the bag cleanly (exit 0).
+MCAP by default, the topics' type names, ``cdr`` and the QoS their publishers offer (read from
+the graph when the first message arrives, as rosbag2 does) in the metadata. Messages are
+written as received (serialised, untouched) with the node clock's time; a topic whose
+publishers were found but sent nothing is listed with no messages. ``/tf_static`` and
+``/robot_description`` are subscribed latched, so what was published before the recording
+started is in it. Ctrl-C or ``--duration`` closes the bag cleanly (exit 0).
 Needs the ``bag`` extra. ``--ros-args`` is accepted.
 """
 
@@ -38,6 +40,8 @@ from tf_demo.cli._live import ToolError
 TOOL = 'tf_record'
 DEFAULT_TOPICS = ['/tf', '/tf_static']
 SPIN_SLICE_S = 0.1
+FLUSH_PERIOD_S = 1.0
+"""How often the bag is committed to disk while recording (SQLite3)."""
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -88,6 +92,14 @@ def _subscription_of(topic: str) -> tuple[Any, Any]:
     return sensor_msgs.JointState, 10
 
 
+def _offered_qos(node: Any, topic: str) -> list[Any]:
+    """Return the QoS profiles the publishers of ``topic`` offer (rosbag2 records them)."""
+    try:
+        return [info.qos_profile for info in node.get_publishers_info_by_topic(topic)]
+    except Exception:  # a graph query that fails costs the metadata, not the recording
+        return []
+
+
 def _record(options: argparse.Namespace) -> int:
     from tf_demo import transport
     from tf_demo.bag import BagError
@@ -100,19 +112,31 @@ def _record(options: argparse.Namespace) -> int:
         raise ToolError(str(error)) from None
     node = transport.create_node(TOOL)
     clock = node.get_clock()
+    offered: dict[str, list[Any]] = {}  # each topic's publishers' QoS, once they are found
     try:
         for topic in topics:
             msg_type, qos = _subscription_of(topic)
 
             def on_data(data: bytes, topic: str = topic) -> None:
-                bag.write(topic, clock.now().nanoseconds, bytes(data))
+                if topic not in offered:
+                    offered[topic] = _offered_qos(node, topic)
+                bag.write(topic, clock.now().nanoseconds, bytes(data), offered[topic])
 
             node.create_subscription(msg_type, topic, on_data, qos, raw=True)
         print(f'tf_record: recording {" ".join(topics)} to {bag.path}', flush=True)
         deadline = None if options.duration is None else time.monotonic() + options.duration
+        next_flush = time.monotonic() + FLUSH_PERIOD_S
         while transport.ok() and (deadline is None or time.monotonic() < deadline):
             transport.spin_once(node, timeout_sec=SPIN_SLICE_S)
+            if time.monotonic() >= next_flush:  # a crash loses at most this much
+                bag.flush()
+                next_flush = time.monotonic() + FLUSH_PERIOD_S
+            for topic in topics:  # as rosbag2 meets a topic's publishers before their data
+                if topic not in offered and (found := _offered_qos(node, topic)):
+                    offered[topic] = found
     finally:
+        for topic, profiles in offered.items():
+            bag.add_topic(topic, profiles)  # listed even if nothing arrived (a no-op otherwise)
         node.destroy_node()
         bag.close()
         print(f'tf_record: {bag.count} messages in {bag.path}', flush=True)

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 import contextlib
+from dataclasses import dataclass
 import itertools
 import threading
 from typing import Any
@@ -48,12 +49,29 @@ from tf_demo.transport.dds.node_services import NodeServicesMixin
 from tf_demo.transport.dds.parameter_services import NodeInterfaces
 from tf_demo.transport.dds.parameter_store import ParameterStore
 from tf_demo.transport.dds.parameters import Parameter
+from tf_demo.transport.dds.qos import QoSProfile
 from tf_demo.transport.dds.services import AnyClient
 from tf_demo.transport.dds.services import AnyService
 from tf_demo.transport.dds.time_source import TimeSource
 from tf_demo.transport.dds.timers import DdsTimer
 
 __all__ = ['Node']
+
+
+@dataclass(frozen=True)
+class TopicEndpointInfo:
+    """One endpoint on a topic, as rclpy's ``TopicEndpointInfo`` (``get_*_info_by_topic``)."""
+
+    node_name: str
+    node_namespace: str
+    topic_type: str
+    endpoint_type: str
+    endpoint_gid: bytes
+    qos_profile: QoSProfile
+
+
+#: What rmw reports for an endpoint whose node it cannot name (``rmw`` graph cache).
+UNKNOWN_NODE = ('_NODE_NAME_UNKNOWN_', '_NODE_NAMESPACE_UNKNOWN_')
 
 
 class _NodeExecutor(Protocol):
@@ -192,6 +210,28 @@ class DdsNode(NodeParametersMixin, NodeServicesMixin, NodeEndpointsMixin):
         return self._participant.count_endpoints(
             dds_wire.dds_topic_name(full_topic), publications=True
         )
+
+    def get_publishers_info_by_topic(
+        self, topic_name: str, no_mangle: bool = False
+    ) -> list[TopicEndpointInfo]:
+        """
+        Return every publisher on ``topic_name`` in the domain with the QoS it offers.
+
+        As rclpy's; the publishing node's name is rmw's ``_NODE_NAME_UNKNOWN_`` here (this
+        backend does not map endpoints to the nodes of other processes).
+        """
+        full_topic = topic_name if no_mangle else self.resolve_topic_name(topic_name)
+        dds_topic = full_topic if no_mangle else dds_wire.dds_topic_name(full_topic)
+        return [
+            TopicEndpointInfo(
+                *UNKNOWN_NODE,
+                dds_wire.ros_type_name(sample.type_name),
+                'PUBLISHER',
+                bytes(sample.key.bytes),
+                dds_wire.profile_from_cyclone(sample.qos),
+            )
+            for sample in self._participant.endpoints(dds_topic, publications=True)
+        ]
 
     def count_subscribers(self, topic_name: str) -> int:
         """Return the number of subscriptions on ``topic_name`` in the whole domain."""

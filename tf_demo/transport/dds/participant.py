@@ -33,6 +33,7 @@ import contextlib
 import ctypes
 import os
 import threading
+from typing import Any
 
 from cyclonedds import _clayer
 from cyclonedds.builtin import BuiltinDataReader
@@ -208,6 +209,14 @@ class DdsParticipant:
 
     def count_endpoints(self, dds_topic: str, *, publications: bool) -> int:
         """Count the live writers (``publications``) or readers on ``dds_topic`` in the domain."""
+        return len(self.endpoints(dds_topic, publications=publications))
+
+    def endpoints(self, dds_topic: str, *, publications: bool) -> list[Any]:
+        """
+        Return the live writers (``publications``) or readers on ``dds_topic`` in the domain.
+
+        Each is Cyclone's built-in topic sample: ``key`` (the GUID), ``type_name``, ``qos``.
+        """
         with self._lock:
             known = self._builtin_readers.get(publications)
             if known is None:
@@ -222,7 +231,7 @@ class DdsParticipant:
                 self._builtin_readers[publications] = known
         reader, alive = known
         samples = reader.read(N=100_000, condition=alive)
-        return int(sum(1 for sample in samples if sample.topic_name == dds_topic))
+        return [sample for sample in samples if sample.topic_name == dds_topic]
 
     def forget(self, handle: int) -> None:
         """Drop the bookkeeping of a deleted endpoint."""

@@ -43,11 +43,13 @@ from tf_demo.transport.dds.wire_config import DiscoveryRange
 from tf_demo.transport.dds.wire_config import domain_id_from_env
 from tf_demo.transport.dds.wire_config import LOOPBACK_DISCOVERY_XML
 from tf_demo.transport.dds.wire_config import ros_topic_name
+from tf_demo.transport.dds.wire_config import ros_type_name
 from tf_demo.transport.dds.wire_qos import cyclone_qos
 from tf_demo.transport.dds.wire_qos import DDS_INFINITY
 from tf_demo.transport.dds.wire_qos import endpoint_qos_from_profile
 from tf_demo.transport.dds.wire_qos import EndpointQos
 from tf_demo.transport.dds.wire_qos import incompatible_policy_name
+from tf_demo.transport.dds.wire_qos import profile_from_cyclone
 
 __all__ = [
     'DDS_INFINITY',
@@ -73,5 +75,7 @@ __all__ = [
     'endpoint_qos_from_profile',
     'get_participant',
     'incompatible_policy_name',
+    'profile_from_cyclone',
     'ros_topic_name',
+    'ros_type_name',
 ]

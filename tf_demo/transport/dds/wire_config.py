@@ -205,6 +205,14 @@ def ros_topic_name(dds_topic: str) -> str | None:
     return None
 
 
+def ros_type_name(dds_type: str) -> str:
+    """Return the ROS type of a DDS type name (``pkg::msg::dds_::Name_`` -> ``pkg/msg/Name``)."""
+    parts = dds_type.split('::')
+    if len(parts) == 4 and parts[2] == 'dds_' and parts[3].endswith('_'):
+        return f'{parts[0]}/{parts[1]}/{parts[3][:-1]}'
+    return dds_type
+
+
 def dds_type_name(ros_type: str) -> str:
     """Return the DDS type name of ``pkg/msg/Name``: ``pkg::msg::dds_::Name_``."""
     match = _MSGTYPE_RE.match(ros_type)

@@ -28,7 +28,12 @@ from typing import NamedTuple
 from cyclonedds.qos import BasePolicy
 from cyclonedds.qos import Policy
 from cyclonedds.qos import Qos
+from tf_demo.transport.dds.qos import DurabilityPolicy
+from tf_demo.transport.dds.qos import HistoryPolicy
+from tf_demo.transport.dds.qos import LivelinessPolicy
 from tf_demo.transport.dds.qos import QoSProfile
+from tf_demo.transport.dds.qos import ReliabilityPolicy
+from tf_demo.transport.dds.time import Duration
 
 __all__ = [
     'DDS_INFINITY',
@@ -36,6 +41,7 @@ __all__ = [
     'cyclone_qos',
     'endpoint_qos_from_profile',
     'incompatible_policy_name',
+    'profile_from_cyclone',
 ]
 
 DDS_INFINITY = 0x7FFFFFFFFFFFFFFF
@@ -169,6 +175,42 @@ def cyclone_qos(qos: EndpointQos, user_data: bytes, *, ignore_local: bool = Fals
     if ignore_local:
         policies.append(Policy.IgnoreLocal.Participant)
     return Qos(*policies)
+
+
+def profile_from_cyclone(qos: Qos) -> QoSProfile:
+    """
+    Read a discovered endpoint's Cyclone QoS back as the ROS profile it offers (rmw's view).
+
+    Infinite durations read as ``RMW_DURATION_INFINITE``, as ``ros2 topic info -v`` and rosbag2
+    report them.
+    """
+    policies = {type(policy).__name__.rsplit('.', 1)[-1]: policy for policy in qos}
+
+    def duration(name: str, field: str) -> Duration:
+        nanoseconds = getattr(policies.get(name), field, DDS_INFINITY)
+        infinite = nanoseconds is None or nanoseconds >= DDS_INFINITY
+        return Duration(nanoseconds=_RMW_DURATION_INFINITE_NS if infinite else nanoseconds)
+
+    keep_all = 'KeepAll' in policies
+    liveliness = policies.get('ManualByTopic')
+    return QoSProfile(
+        history=HistoryPolicy.KEEP_ALL if keep_all else HistoryPolicy.KEEP_LAST,
+        depth=0 if keep_all else int(getattr(policies.get('KeepLast'), 'depth', 1)),
+        reliability=ReliabilityPolicy.RELIABLE
+        if 'Reliable' in policies
+        else ReliabilityPolicy.BEST_EFFORT,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL
+        if 'TransientLocal' in policies
+        else DurabilityPolicy.VOLATILE,
+        deadline=duration('Deadline', 'deadline'),
+        lifespan=duration('Lifespan', 'lifespan'),
+        liveliness=LivelinessPolicy.MANUAL_BY_TOPIC
+        if liveliness is not None
+        else LivelinessPolicy.AUTOMATIC,
+        liveliness_lease_duration=duration(
+            'ManualByTopic' if liveliness is not None else 'Automatic', 'lease_duration'
+        ),
+    )
 
 
 _DDS_POLICY_TO_ROS = {
