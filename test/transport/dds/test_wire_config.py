@@ -122,3 +122,9 @@ def test_topic_and_type_names_are_mangled_like_rmw():
         dds_wire.dds_topic_name('tf')
     with pytest.raises(ValueError, match='not a ROS interface type name'):
         dds_wire.dds_type_name('TFMessage')
+
+
+def test_ros_type_name_reverses_dds_type_name() -> None:
+    for ros_type in ('tf2_msgs/msg/TFMessage', 'rcl_interfaces/srv/GetParameters'):
+        assert dds_wire.ros_type_name(dds_wire.dds_type_name(ros_type)) == ros_type
+    assert dds_wire.ros_type_name('DCPSParticipant') == 'DCPSParticipant'  # not a ROS type

@@ -110,3 +110,38 @@ def test_incompatible_policy_names_match_rclpy():
     assert dds_wire.incompatible_policy_name(11) == 'RELIABILITY'
     assert dds_wire.incompatible_policy_name(4) == 'DEADLINE'
     assert dds_wire.incompatible_policy_name(25) == 'INVALID'
+
+
+@pytest.mark.parametrize(
+    'profile',
+    [
+        QoSProfile(
+            depth=7,
+            reliability=ReliabilityPolicy.RELIABLE,
+            durability=DurabilityPolicy.VOLATILE,
+            deadline=Duration(seconds=2, nanoseconds=500_000_000),
+            liveliness=LivelinessPolicy.AUTOMATIC,
+        ),
+        QoSProfile(
+            history=HistoryPolicy.KEEP_ALL,
+            reliability=ReliabilityPolicy.BEST_EFFORT,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL,
+            lifespan=Duration(nanoseconds=5),
+            liveliness=LivelinessPolicy.MANUAL_BY_TOPIC,
+            liveliness_lease_duration=Duration(seconds=3),
+        ),
+    ],
+)
+def test_a_discovered_endpoints_qos_reads_back_as_the_profile_it_came_from(
+    profile: QoSProfile,
+) -> None:
+    """Profile -> Cyclone QoS on the wire -> the profile again (unset durations: infinite)."""
+    wire = dds_wire.cyclone_qos(dds_wire.endpoint_qos_from_profile(profile), b'')
+    back = dds_wire.profile_from_cyclone(wire)
+    infinite = 2**63 - 1
+    for name in ('history', 'reliability', 'durability', 'liveliness'):
+        assert getattr(back, name) == getattr(profile, name), name
+    assert back.depth == (0 if profile.history == HistoryPolicy.KEEP_ALL else profile.depth)
+    for name in ('deadline', 'lifespan', 'liveliness_lease_duration'):
+        wanted = getattr(profile, name).nanoseconds or infinite
+        assert getattr(back, name).nanoseconds == wanted, name
