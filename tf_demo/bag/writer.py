@@ -20,9 +20,10 @@ topic's connection, made when its first message arrives (as rosbag2 makes it whe
 topic's publishers), carries its type name, ``cdr`` and the QoS profiles its publishers offer
 (given by the caller from the graph; tf2's and ROS 2's for these topics when none is known:
 ``/tf_static`` and ``/robot_description`` latched). Every message is written as it arrives;
-:meth:`TfBagWriter.flush` commits SQLite3's transaction (rosbags commits only on close), so a
-crash loses only what came after the last flush. An MCAP file needs its summary, written on
-close.
+:meth:`TfBagWriter.flush` puts what was written on disk (rosbags commits SQLite3 and writes
+MCAP chunks only on close or every MiB), so a crash loses only what came after the last flush:
+a crashed ``.db3`` opens as it is; a crashed ``.mcap`` lacks its summary and is read by MCAP's
+streaming readers (``mcap recover``).
 """
 
 from __future__ import annotations
@@ -146,10 +147,21 @@ class TfBagWriter(ClosesOnExit):
         self.count += 1
 
     def flush(self) -> None:
-        """Make what was written so far survive a crash (SQLite3: commit; MCAP: nothing to do)."""
-        connection = getattr(getattr(self._writer, 'storage', None), 'conn', None)
-        if connection is not None:  # rosbags' Sqlite3Writer keeps one open transaction
+        """
+        Put what was written so far on disk, to survive a crash.
+
+        SQLite3: commit (rosbags keeps one transaction open until close). MCAP: close the
+        pending chunk and flush the file (rosbags buffers up to 1 MiB of messages in memory);
+        a crashed MCAP has no summary, and MCAP's streaming readers (``mcap recover``) read it.
+        """
+        storage: Any = getattr(self._writer, 'storage', None)
+        connection = getattr(storage, 'conn', None)
+        if connection is not None:  # rosbags' Sqlite3Writer
             connection.commit()
+        chunk = getattr(storage, 'chunk', None)
+        if chunk is not None and getattr(chunk, 'msgs', None):  # rosbags' McapWriter
+            storage.close_chunk()
+            storage.bio.flush()
 
     def add_topic(self, topic: str, offered_qos: Sequence[Any] = ()) -> Any:
         """Add ``topic``'s connection now (once; see :meth:`write` for ``offered_qos``)."""
