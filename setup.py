@@ -61,7 +61,7 @@ setup(
         # tf_view's live 3D view in the browser.
         'view': ['viser>=1.0', 'pycollada'],
         # tf_demo.bag: rosbag2 recordings (MCAP and SQLite3) without ROS; tf_plot's plots.
-        'bag': ['rosbags>=0.10', 'matplotlib>=3.6'],
+        'bag': ['rosbags>=0.10', 'matplotlib>=3.6', 'mcap>=1.1'],  # mcap: unfinished .mcap
         'test': [
             'cyclonedds==11.0.1',
             'pytest>=7',

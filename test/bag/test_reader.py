@@ -197,3 +197,28 @@ def test_a_truncated_mcap_is_refused_in_one_line(tmp_path: Path):
 
     with pytest.raises(BagError, match=r'circle\.mcap: (not a readable rosbag2|damaged after)'):
         read_all()
+
+
+def test_an_unclosed_mcap_reads_up_to_its_last_flush(tmp_path: Path):
+    """A recorder killed after a flush: the copy of its .mcap gives the flushed messages, then
+    one line saying the file was not closed (tf_record flushes every second)."""
+    from tf_demo.bag import TfBagWriter
+
+    writer = TfBagWriter(tmp_path / 'live', ['/tf'])
+    for k in range(10):
+        writer.write('/tf', T0 + k * SECOND // 20, tf_bytes(circle(k)))
+    writer.flush()
+    writer.write('/tf', T0 + SECOND, tf_bytes(circle(20)))  # not flushed: lost in a crash
+    crashed = tmp_path / 'crashed.mcap'
+    crashed.write_bytes(next((tmp_path / 'live').glob('*.mcap')).read_bytes())
+    writer.close()
+    with open_tf_bag(crashed) as bag:
+        assert bag.topics == ['/tf']
+        assert (bag.start_ns, bag.end_ns) == (T0, T0 + 9 * SECOND // 20)
+        records = bag.records()
+        assert [next(records).bag_time_ns for _ in range(10)][-1] == T0 + 9 * SECOND // 20
+        with pytest.raises(BagError, match=r'ends without its summary \(the recording was not'):
+            next(records)
+    loaded = load_bag(crashed)
+    assert loaded.damage is not None
+    assert loaded.core.lookup_transform('odom', 'base_link', T0 + 9 * SECOND // 20)

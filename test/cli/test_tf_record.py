@@ -25,6 +25,7 @@ from typing import Any
 from conftest import eventually
 from conftest import ProcessOutput
 import pytest
+from tf_demo.bag import load_bag
 from tf_demo.bag import load_buffer
 from tf_demo.bag import open_tf_bag
 from tf_demo.msgs.cdr import deserialize
@@ -190,3 +191,6 @@ def test_a_crashed_mcap_keeps_its_flushed_chunks_for_mcaps_streaming_reader(
             pass
     assert len(topics) >= 10
     assert set(topics) == {'/tf'}
+    loaded = load_bag(bag)  # our reader too: what was flushed, then the one-line damage
+    assert loaded.core.can_transform('odom', 'base_link', 0)
+    assert 'the file ends without its summary (the recording was not closed)' in str(loaded.damage)

@@ -19,11 +19,13 @@ A bag is a directory with ``metadata.yaml`` or a single ``.mcap`` / ``.db3`` fil
 Jazzy's rosbag2 (MCAP by default) and Humble's (SQLite3) write them. Every problem is one
 :class:`BagError` line naming the file and what is wrong: no such bag, not a bag, a damaged
 container, no TF topic, a serialization other than ``cdr``, an undecodable message (with its bag
-time). :meth:`TfBag.records` is a generator, so a long bag is read in bounded memory.
+time). An ``.mcap`` whose recorder was killed (no summary) is read with MCAP's stream reader up to
+where the writing stopped (:class:`UnfinishedMcap`). :meth:`TfBag.records` is a generator, so a long bag is read in bounded memory.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -158,12 +160,15 @@ def open_tf_bag(
     if not bag.exists():
         msg = f'{bag}: no such bag (a directory with metadata.yaml, or a .mcap or .db3 file)'
         raise BagError(msg)
+    reader: Any
     try:
         reader = Reader(bag)
         reader.open()
     except Exception as error:  # rosbags raises its own errors, and OSError, sqlite3 ...
-        msg = f'{bag}: not a readable rosbag2: {error}'
-        raise BagError(msg) from None
+        reader = _unfinished_mcap(bag)
+        if reader is None:
+            msg = f'{bag}: not a readable rosbag2: {error}'
+            raise BagError(msg) from None
     wanted = (tf_topic, static_topic)
     connections = [c for c in reader.connections if c.topic in wanted]
     problem = None
@@ -247,6 +252,86 @@ def load_buffer(
     if loaded.damage is not None:
         raise loaded.damage
     return loaded.core
+
+
+@dataclass(frozen=True)
+class _McapChannel:
+    """What :class:`TfBag` reads of a connection, for an MCAP channel."""
+
+    id: int
+    topic: str
+    msgtype: str
+    ext: Any
+
+
+class UnfinishedMcap:
+    """
+    An MCAP file without its summary (its recorder was killed), read with MCAP's stream reader.
+
+    It offers what :class:`TfBag` uses of rosbags' reader. Everything up to the end of the last
+    whole record is read; the messages then end with an error saying the file was not closed.
+    """
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self.connections: list[_McapChannel] = []
+        times = [message.log_time for message in self._records(self.connections.append)]
+        self.start_time = min(times, default=0)
+        self.end_time = max(times, default=0) + 1  # rosbags: one past the last
+
+    def _records(self, on_channel: Callable[[_McapChannel], object]) -> Iterator[Any]:
+        """Yield the file's messages (calling ``on_channel`` for each channel), to its cut."""
+        from types import SimpleNamespace
+
+        from mcap.records import Channel
+        from mcap.records import Message
+        from mcap.records import Schema
+        from mcap.stream_reader import StreamReader
+
+        schemas: dict[int, str] = {}
+        with self.path.open('rb') as stream:
+            records = StreamReader(stream, skip_magic=False).records
+            while True:
+                try:
+                    record = next(records)
+                except Exception:  # EndOfFile, a record cut short: where the writing stopped
+                    return
+                if isinstance(record, Schema):
+                    schemas[record.id] = record.name
+                elif isinstance(record, Channel):
+                    ext = SimpleNamespace(serialization_format=record.message_encoding)
+                    msgtype = schemas.get(record.schema_id, '')
+                    on_channel(_McapChannel(record.id, record.topic, msgtype, ext))
+                elif isinstance(record, Message):
+                    yield record
+
+    def messages(self, connections: list[Any]) -> Iterator[tuple[Any, int, bytes]]:
+        """Yield ``(connection, log time, data)`` of ``connections``, then say it ends early."""
+        wanted = {connection.id: connection for connection in connections}
+        for message in self._records(lambda channel: None):
+            connection = wanted.get(message.channel_id)
+            if connection is not None:
+                yield connection, message.log_time, message.data
+        msg = 'the file ends without its summary (the recording was not closed)'
+        raise ValueError(msg)
+
+    def close(self) -> None:
+        """Nothing is kept open between reads."""
+
+
+def _unfinished_mcap(bag: Path) -> UnfinishedMcap | None:
+    """Open ``bag`` (an ``.mcap``, or a directory holding one) as an unfinished MCAP, or None."""
+    files = [bag] if bag.suffix == '.mcap' else sorted(bag.glob('*.mcap')) if bag.is_dir() else []
+    if len(files) != 1 or (bag.is_dir() and (bag / 'metadata.yaml').exists()):
+        return None
+    try:
+        with files[0].open('rb') as stream:
+            if stream.read(8) != b'\x89MCAP0\r\n':
+                return None
+        opened = UnfinishedMcap(files[0])
+    except Exception:  # no mcap package, unreadable: the caller reports rosbags' error
+        return None
+    return opened if opened.connections else None
 
 
 def _seconds(stamp_ns: int) -> str:
