@@ -20,7 +20,8 @@ Jazzy's rosbag2 (MCAP by default) and Humble's (SQLite3) write them. Every probl
 :class:`BagError` line naming the file and what is wrong: no such bag, not a bag, a damaged
 container, no TF topic, a serialization other than ``cdr``, an undecodable message (with its bag
 time). An ``.mcap`` whose recorder was killed (no summary) is read with MCAP's stream reader up to
-where the writing stopped (:class:`UnfinishedMcap`). :meth:`TfBag.records` is a generator, so a long bag is read in bounded memory.
+where the writing stopped (:class:`UnfinishedMcap`). :meth:`TfBag.records` is a generator, so
+a long bag is read in bounded memory.
 """
 
 from __future__ import annotations
