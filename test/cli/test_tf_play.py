@@ -213,7 +213,7 @@ def test_the_first_recorded_static_of_each_child_holds_from_the_start(tmp_path: 
     with open_tf_bag(played_bag(tmp_path / 'bag')) as bag:
         statics = first_statics(bag.records(statics_only=True))
         assert sum(1 for _ in bag.records(statics_only=True)) == 3
-    assert {child: transform[3] for child, (_, transform) in statics.items()} == {
+    assert {child: transform[3] for child, transform in statics.items()} == {
         'laser': (0.1, 0.0, 0.2),
         'odom': (1.0, 2.0, 0.0),
     }

@@ -139,6 +139,22 @@ class TfBag(ClosesOnExit):
             is_static = connection.topic == self._static_topic
             yield BagRecord(int(bag_time), transforms, is_static, bytes(data))
 
+    def read(self, consume: Callable[[BagRecord], object]) -> tuple[int, BagError | None]:
+        """
+        Hand every record to ``consume`` up to the bag's end or its damage.
+
+        :returns: the end of what was read (the bag's end, or the last record before the damage)
+            and the damage (None when the whole bag was read).
+        """
+        last_ns = self.start_ns
+        try:
+            for record in self.records():
+                consume(record)
+                last_ns = record.bag_time_ns
+        except BagError as damage:
+            return last_ns, damage
+        return self.end_ns, None
+
     def close(self) -> None:
         """Close the bag's files."""
         self._reader.close()
@@ -222,19 +238,17 @@ def load_bag(
         core = BufferCore(cache_time_ns if cache_time_ns is not None else span, log=_quiet)
         insert = core.set_transform
         authority = f'bag {bag.path.name}'
-        last_ns = bag.start_ns
-        try:
-            for record in bag.records():
-                last_ns = record.bag_time_ns
-                for parent, child, stamp_ns, translation, rotation in record.transforms:
-                    try:
-                        insert(parent, child, stamp_ns, translation, rotation, authority,
-                               record.is_static)  # fmt: skip
-                    except Exception:
-                        continue
-        except BagError as damage:
-            return LoadedBag(core, bag.start_ns, last_ns, damage)
-        return LoadedBag(core, bag.start_ns, bag.end_ns, None)
+
+        def insert_all(record: BagRecord) -> None:
+            for parent, child, stamp_ns, translation, rotation in record.transforms:
+                try:
+                    insert(parent, child, stamp_ns, translation, rotation, authority,
+                           record.is_static)  # fmt: skip
+                except Exception:
+                    continue
+
+        end_ns, damage = bag.read(insert_all)
+        return LoadedBag(core, bag.start_ns, end_ns, damage)
 
 
 def load_buffer(

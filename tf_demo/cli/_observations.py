@@ -104,20 +104,19 @@ def observations_from_bag(
 
     :raises tf_demo.bag.BagError: for a bag that cannot be opened (one line naming it).
     """
-    from tf_demo.bag import BagError
+    from tf_demo.bag import BagRecord
     from tf_demo.bag import open_tf_bag
 
     observations: list[Observation] = []
+
+    def observe(record: BagRecord) -> None:
+        topic = TF_STATIC_TOPIC if record.is_static else TF_TOPIC
+        transforms = tuple(ObservedTransform(*t) for t in record.transforms)
+        observations.append(Observation(topic, record.bag_time_ns, transforms))
+
     with open_tf_bag(path, tf_topic, static_topic) as bag:
-        try:
-            for record in bag.records():
-                topic = TF_STATIC_TOPIC if record.is_static else TF_TOPIC
-                transforms = tuple(ObservedTransform(*t) for t in record.transforms)
-                observations.append(Observation(topic, record.bag_time_ns, transforms))
-        except BagError as damage:
-            end_ns = observations[-1].receive_ns if observations else bag.start_ns
-            return BagObservations(observations, bag.start_ns, end_ns, damage)
-        return BagObservations(observations, bag.start_ns, bag.end_ns, None)
+        end_ns, damage = bag.read(observe)
+        return BagObservations(observations, bag.start_ns, end_ns, damage)
 
 
 def add_observation(

@@ -38,6 +38,7 @@ from typing import Any
 
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
+from tf_demo.msgs.cdr import TransformTuple
 
 TOOL = 'tf_play'
 DEFAULT_CLOCK_HZ = 40.0
@@ -100,21 +101,18 @@ class Timeline:
         return self.first_ns + round((now - self.started) * self.rate * 1e9)
 
 
-def static_key(transform: tuple[str, str, int, Any, Any]) -> tuple[str, StaticKey]:
+def static_key(transform: TransformTuple) -> tuple[str, StaticKey]:
     """Return a static transform's child and what it says (a change is worth sending again)."""
     parent, child, stamp_ns, translation, rotation = transform
     return child, (parent, stamp_ns, tuple(translation), tuple(rotation))
 
 
-def first_statics(
-    records: Iterable[Any],
-) -> dict[str, tuple[StaticKey, tuple[str, str, int, Any, Any]]]:
+def first_statics(records: Iterable[Any]) -> dict[str, TransformTuple]:
     """Return each child's first recorded static transform (they hold from the bag's start)."""
-    found: dict[str, tuple[StaticKey, tuple[str, str, int, Any, Any]]] = {}
+    found: dict[str, TransformTuple] = {}
     for record in records:
         for transform in record.transforms:
-            child, key = static_key(transform)
-            found.setdefault(child, (key, transform))
+            found.setdefault(transform[1], transform)
     return found
 
 
@@ -141,7 +139,7 @@ class Player:
         self.next_tick = 0.0
         self.published = 0
 
-    def send_statics(self, transforms: Iterable[tuple[str, str, int, Any, Any]]) -> None:
+    def send_statics(self, transforms: Iterable[TransformTuple]) -> None:
         """Send the static transforms that are new or changed (the broadcaster latches all)."""
         from tf_demo.nodes.helpers import make_transform_stamped
 
@@ -228,7 +226,7 @@ def _play(options: argparse.Namespace) -> int:
             except BagError:
                 statics = {}  # the main pass stops at the damage and says where
             player = Player(node, options)
-            player.send_statics(transform for _, transform in statics.values())
+            player.send_statics(statics.values())
             span_s = (bag.end_ns - bag.start_ns) / 1e9
             print(
                 f'{TOOL}: playing {bag.path} ({span_s:.3f} s; {", ".join(bag.topics)}) '

@@ -142,7 +142,6 @@ def _require_matplotlib() -> None:
 
 def _write_plot(track: Track, output: str, origin: str) -> int:
     """Render ``track`` into ``output`` and say what is in it."""
-    _require_matplotlib()
     data = render(track, origin, Path(output).suffix.lower().lstrip('.'))
     try:
         write_bytes_atomically(output, data)

@@ -131,9 +131,9 @@ def _record(options: argparse.Namespace) -> int:
             if time.monotonic() >= next_flush:  # a crash loses at most this much
                 bag.flush()
                 next_flush = time.monotonic() + FLUSH_PERIOD_S
-            for topic in topics:  # as rosbag2 meets a topic's publishers before their data
-                if topic not in offered and (found := _offered_qos(node, topic)):
-                    offered[topic] = found
+                for topic in topics:  # as rosbag2 meets a topic's publishers before their data
+                    if topic not in offered and (found := _offered_qos(node, topic)):
+                        offered[topic] = found
     finally:
         for topic, profiles in offered.items():
             bag.add_topic(topic, profiles)  # listed even if nothing arrived (a no-op otherwise)
