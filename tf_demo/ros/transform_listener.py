@@ -92,7 +92,8 @@ def _stop_spin_threads_at_exit() -> None:
     """
     for thread, stop in list(_spin_threads.items()):
         stop.set()
-        thread.join(timeout=SPIN_THREAD_JOIN_S)
+        if thread.ident is not None:  # registered before start(): a stop may come in between
+            thread.join(timeout=SPIN_THREAD_JOIN_S)
     _spin_threads.clear()
 
 
