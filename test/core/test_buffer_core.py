@@ -180,6 +180,32 @@ def test_leading_slash_stripped_once():
     assert core.lookup_transform('p', 'c', 0).translation == (1.0, 0.0, 0.0)
 
 
+def test_names_met_before_take_the_same_checks(log):
+    """Frames known from earlier inserts (with or without their slash) are checked as new ones."""
+    core = BufferCore(S, log=log)
+    assert core.set_transform('/p', 'c', S, (1, 0, 0), IDENTITY, 'auth')
+    assert core.set_transform('p', '/c', 2 * S, (2, 0, 0), IDENTITY, 'auth')  # the same link
+    assert core.frame_ids() == ['c', 'p']
+    assert core.lookup_transform('p', 'c', S + S // 2).translation == (1.5, 0.0, 0.0)
+    assert not core.set_transform('/c', 'c', 3 * S, (0, 0, 0), IDENTITY, 'auth')
+    assert log.lines[-1][1].startswith('TF_SELF_TRANSFORM')
+    assert '"c"' in log.lines[-1][1]
+    # tf2 refuses NaN only: an infinite translation is stored, even one whose sum is NaN.
+    assert core.set_transform('p', 'c', 3 * S, (math.inf, -math.inf, 0), IDENTITY, 'auth')
+    assert not core.set_transform('p', 'c', 3 * S, (math.nan, 0, 0), IDENTITY, 'auth')
+    assert log.lines[-1][1].startswith('TF_NAN_INPUT')
+    assert not core.set_transform('p', 'c', 4 * S, (0, 0, 0), (0, 0, 0, 0), 'auth')
+    assert log.lines[-1][1].startswith('TF_DENORMALIZED_QUATERNION')
+    assert not core.set_transform('p', 'c', 0, (0, 0, 0), IDENTITY, 'auth')
+    assert log.lines[-1][1].startswith('TF_OLD_DATA ignoring data from the past for frame c ')
+    assert core.set_transform('p', 'c', 5 * S, (0, 0, 0), (0, 0, 1e-60, 1e-60), 'auth')
+    with pytest.raises(TypeError, match='parent and child must be str'):
+        core.set_transform('p', ['c'], 6 * S, (0, 0, 0), IDENTITY)  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match='as numbers'):
+        core.set_transform('p', 'c', 6 * S, ('1', 0, 0), IDENTITY)  # type: ignore[arg-type]
+    assert core.frame_ids() == ['c', 'p']
+
+
 def test_ids_child_first_and_kept_after_clear():
     """A new child gets its id before its parent; clear() keeps ids, authorities, statics."""
     core = BufferCore()

@@ -25,6 +25,7 @@ from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import ERROR_BACKWARD_EXTRAPOLATION
 from tf_demo.core.time_cache import ERROR_FORWARD_EXTRAPOLATION
 from tf_demo.core.time_cache import ERROR_NO_DATA_FOR_EXTRAPOLATION
+from tf_demo.core.time_cache import pack_values
 from tf_demo.core.time_cache import Sample
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
@@ -277,3 +278,73 @@ def test_interior_search_matches_linear_scan_on_irregular_stamps():
                 assert sample[0] == older
             else:
                 assert min(older, newer) <= sample[0] <= max(older, newer)
+
+
+def _raw_quaternions(count: int, seed: int) -> list[tuple[float, float, float, float]]:
+    """Return ``count`` quaternions of assorted norms (none of them normalised)."""
+    rng = random.Random(seed)
+    return [
+        (rng.gauss(0, 1), rng.gauss(0, 1), rng.gauss(0, 1), rng.gauss(0, 1)) for _ in range(count)
+    ]
+
+
+def test_a_raw_sample_reads_back_as_tf2_stores_it_bit_for_bit():
+    """insert_raw keeps the rotation as given; every read canonicalises it exactly once."""
+    cache = TimeCache(1000 * S)
+    quaternions = _raw_quaternions(200, 5)
+    for k, q in enumerate(quaternions):
+        assert cache.insert_raw((k + 1) * S, pack_values(float(k), 0.0, -1.0, *q), 3)
+    for k, q in enumerate(quaternions):
+        expected = (float(k), 0.0, -1.0, *math3d.canonical_quat(q), 3)
+        sample = cache.sample_at(k)
+        assert [v.hex() for v in sample[:7]] == [v.hex() for v in expected[:7]]
+        assert sample[7] == 3
+        assert cache.sample_at(k) is sample  # made once
+    assert cache.get_data(200 * S) is cache.sample_at(199)  # the newest, as read
+    arrays = cache.arrays()
+    for k, q in enumerate(quaternions):
+        assert [v.hex() for v in arrays.values[3:, k].tolist()] == [
+            v.hex() for v in math3d.canonical_quat(q)
+        ]
+
+
+def test_arrays_of_raw_and_given_samples_hold_what_a_read_returns():
+    """arrays() canonicalises the raw samples and keeps the given (canonical) ones as given."""
+    cache = TimeCache(100 * S)
+    quaternions = _raw_quaternions(50, 6)
+    for k, q in enumerate(quaternions):
+        if k % 3:
+            cache.insert_raw((k + 1) * S, pack_values(0.0, float(k), 0.0, *q), 1)
+        else:  # a canonical sample whose second canonicalisation could change its bits
+            cache.insert((k + 1) * S, (0.0, float(k), 0.0, *math3d.canonical_quat(q), 1))
+    cache.get_data(20 * S)  # reads (memoises) samples 18 and 19
+    table = cache.arrays().values
+    for k in range(len(quaternions)):
+        assert table[:, k].tolist() == list(cache.sample_at(k)[:7])
+
+
+def test_equal_stamps_are_duplicates_when_tf2_would_store_them_equal():
+    """The duplicate check compares samples as tf2 stores them, not as they were sent."""
+    cache = TimeCache(10 * S)
+    q = (0.0, 0.0, 0.6, 0.8)
+    assert cache.insert_raw(S, pack_values(1.0, 2.0, 3.0, *q), 1)
+    assert cache.insert_raw(S, pack_values(1.0, 2.0, 3.0, *q), 1)  # dropped: the same sample
+    assert len(cache) == 1
+    assert cache.insert_raw(S, pack_values(1.0, 2.0, 3.5, *q), 1)  # kept: other data
+    assert len(cache) == 2
+    assert _data(cache, S)[2] == 3.5  # the newest-inserted of the stamp
+
+
+def test_pruning_and_out_of_order_inserts_keep_every_field_aligned():
+    """Stamps, values, parents and read samples stay in step through pruning and inserts."""
+    cache = TimeCache(5 * S)
+    for k in range(0, 400, 2):  # prunes and compacts on the way
+        cache.insert_raw(k * S // 10, pack_values(float(k), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0), k + 1)
+        if k % 7 == 0:
+            cache.get_data(k * S // 10)  # some samples read (memoised) before they move
+    for k in range(351, 399, 4):  # out of order, between the held samples
+        cache.insert_raw(k * S // 10, pack_values(float(k), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0), k + 1)
+    for index in range(cache._start, len(cache._stamps)):
+        k = cache._stamps[index] * 10 // S
+        assert cache.sample_at(index) == (float(k), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, k + 1)
+        assert cache._parents[index] == k + 1

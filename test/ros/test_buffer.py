@@ -217,8 +217,11 @@ def test_extrapolation_subclasses_are_exposed() -> None:
         buffer.lookup_transform('a', 'b', 1 * S)
 
 
-class _Unreadable(float):
-    """A float whose value cannot be read: the core refuses it with a TypeError."""
+class _Unreadable:
+    """A number whose value cannot be read: the core refuses it with a TypeError."""
+
+    def __init__(self, value: float) -> None:
+        self.value = value
 
     def __float__(self) -> float:
         raise ValueError('unreadable')
@@ -230,7 +233,7 @@ def test_insert_decoded_is_the_listeners_fast_path() -> None:
     failures = buffer.insert_decoded(
         [
             ('a', 'b', S, (1.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
-            ('a', 'bad', S, (_Unreadable(1.0), 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
+            ('a', 'bad', S, (cast('float', _Unreadable(1.0)), 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
             ('a', 'nan', S, (float('nan'), 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
             ('b', 'c', S, (0.0, 2.0, 0.0), (0.0, 0.0, 0.0, 1.0)),
         ],

@@ -37,6 +37,7 @@ from collections.abc import Callable
 from collections.abc import Sequence
 import logging
 import math
+import struct
 import threading
 from typing import NamedTuple
 from typing import TYPE_CHECKING
@@ -55,8 +56,10 @@ from tf_demo.core.lazy_import import lazy_module
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
 from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import duration_to_sec
+from tf_demo.core.time_cache import pack_values
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
+from tf_demo.core.time_cache import unpack_values
 
 if TYPE_CHECKING:
     import numpy as np
@@ -77,6 +80,8 @@ QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
 
 _LOGGER = logging.getLogger('tf_demo.core')
 _canonical_quat = math3d.canonical_quat
+_pack_values = pack_values
+_unpack_values = unpack_values
 _new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 #: Lanes per pass of :meth:`BufferCore.lookup_transforms`.
 _BATCH_CHUNK = 4096
@@ -134,6 +139,8 @@ class BufferCore(FrameTree):
         self._callbacks: dict[int, Callable[[], None]] = {}
         self._callbacks_snapshot: tuple[Callable[[], None], ...] = ()
         self._next_handle = 1
+        #: Frame ids by the names a valid insert gave (a leading ``/`` included).
+        self._insert_ids: dict[str, int] = {}
 
     # ------------------------------------------------------------------ insertion
 
@@ -157,6 +164,65 @@ class BufferCore(FrameTree):
         :returns: True when stored (an exact duplicate counts as stored), False when rejected.
         :raises TypeError: if the arguments are not strings / numbers of the right shape.
         """
+        # The fast path: both names met before in a valid insert, a finite translation, and a
+        # rotation whose squared norm is far from 0 and overflow (valid whatever its exact
+        # canonical form, which is made when the sample is first read).
+        known = self._insert_ids
+        try:
+            child_id = known.get(child)
+            parent_id = known.get(parent)
+            tx, ty, tz = translation
+            x, y, z, w = rotation
+            values = _pack_values(tx, ty, tz, x, y, z, w)
+            if type(stamp_ns) is not int:
+                stamp_ns = int(stamp_ns)
+            norm2 = x * x + y * y + z * z + w * w
+        except (TypeError, ValueError, struct.error):
+            child_id = None  # the checked path says what is wrong
+        if (
+            is_static
+            or child_id is None
+            or parent_id is None
+            or child_id == parent_id
+            or not 1e-100 < norm2 < 1e100
+            or (total := tx + ty + tz) != total  # NaN, or inf - inf
+        ):
+            return self._set_transform_checked(
+                parent, child, stamp_ns, translation, rotation, authority, is_static
+            )
+        lock = self._lock
+        lock.acquire()
+        try:
+            cache = self._caches[child_id]
+            if cache is None or cache.is_static:
+                cache = self._caches[child_id] = TimeCache(self.cache_time_ns, child_id)
+            reshaped = cache.latest[1] != parent_id
+            stored = cache.insert_raw(stamp_ns, values, parent_id)
+            if stored:
+                self._authority[child_id] = authority
+                if reshaped:
+                    self._shape_version += 1
+            callbacks = self._callbacks_snapshot
+        finally:
+            lock.release()
+        if not stored:
+            self._log_old_data(self._names[child_id], stamp_ns, authority)
+            return False
+        for callback in callbacks:
+            callback()
+        return True
+
+    def _set_transform_checked(  # noqa: PLR0917 (set_transform's arguments)
+        self,
+        parent: str,
+        child: str,
+        stamp_ns: int,
+        translation: Sequence[float],
+        rotation: Sequence[float],
+        authority: str,
+        is_static: bool,
+    ) -> bool:
+        """:meth:`set_transform` with every check, for what its fast path does not take."""
         if not isinstance(parent, str) or not isinstance(child, str):
             raise TypeError(
                 f'parent and child must be str, got {type(parent).__name__} and '
@@ -164,42 +230,37 @@ class BufferCore(FrameTree):
             )
         try:
             tx, ty, tz = translation
-            tx = float(tx)
-            ty = float(ty)
-            tz = float(tz)
-            rx, ry, rz, rw = _canonical_quat(rotation)
+            x, y, z, w = rotation
+            tx, ty, tz, x, y, z, w = _unpack_values(_pack_values(tx, ty, tz, x, y, z, w))
             stamp_ns = int(stamp_ns)
-        except (TypeError, ValueError) as error:
+        except (TypeError, ValueError, struct.error) as error:
             raise TypeError(
                 'set_transform needs translation (x, y, z), rotation (x, y, z, w) as numbers '
                 f'and an integer stamp_ns: {error}'
             ) from error
-        # Share one object for exact zeros (planar robots store many): saves memory per sample.
-        tx, ty, tz = tx or 0.0, ty or 0.0, tz or 0.0
-        rx, ry, rz = rx or 0.0, ry or 0.0, rz or 0.0
+        given_parent, given_child = parent, child
         if parent and parent[0] == '/':
             parent = parent[1:]
         if child and child[0] == '/':
             child = child[1:]
+        rx, ry, rz, rw = _canonical_quat((x, y, z, w))
         total = tx + ty + tz + rx + ry + rz + rw  # NaN if any value is NaN (or inf - inf)
         if (
             child == parent or not child or not parent or total != total  # noqa: PLR0124
         ) and self._log_invalid(parent, child, authority, (tx, ty, tz), (rx, ry, rz, rw)):
             return False
-
         with self._lock:
-            child_id = self._ids.get(child)
-            if child_id is None:
-                child_id = self._intern(child)
+            child_id = self._intern(child)
             cache = self._caches[child_id]
             if cache is None or cache.is_static != is_static:
                 cache = (
                     StaticCache(child_id) if is_static else TimeCache(self.cache_time_ns, child_id)
                 )
                 self._caches[child_id] = cache
-            parent_id = self._ids.get(parent)
-            if parent_id is None:
-                parent_id = self._intern(parent)
+            parent_id = self._intern(parent)
+            if child_id != parent_id:  # the fast path may take these names from now on
+                self._insert_ids[given_child] = child_id
+                self._insert_ids[given_parent] = parent_id
             sample = (tx, ty, tz, rx, ry, rz, rw, parent_id)
             # A new parent (or a new static value) changes the shape the path plans rely on.
             reshaped = cache.latest[1] != parent_id or (is_static and cache.get_data(0) != sample)
@@ -210,16 +271,20 @@ class BufferCore(FrameTree):
                     self._shape_version += 1
             callbacks = self._callbacks_snapshot
         if not stored:
-            self._log(
-                logging.WARNING,
-                f'TF_OLD_DATA ignoring data from the past for frame {child} at time '
-                f'{display_time_point(stamp_ns)} according to authority {authority}\n'
-                'Possible reasons are listed at http://wiki.ros.org/tf/Errors%20explained',
-            )
+            self._log_old_data(child, stamp_ns, authority)
             return False
         for callback in callbacks:
             callback()
         return True
+
+    def _log_old_data(self, child: str, stamp_ns: int, authority: str) -> None:
+        """Log tf2's TF_OLD_DATA warning for a sample older than the cache keeps."""
+        self._log(
+            logging.WARNING,
+            f'TF_OLD_DATA ignoring data from the past for frame {child} at time '
+            f'{display_time_point(stamp_ns)} according to authority {authority}\n'
+            'Possible reasons are listed at http://wiki.ros.org/tf/Errors%20explained',
+        )
 
     def _log_invalid(
         self, parent: str, child: str, authority: str, translation: Vec3, rotation: Quat

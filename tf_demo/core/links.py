@@ -90,9 +90,9 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
                 if start > last:
                     return None
                 if time_ns == latest or not time_ns:
-                    lx, ly, lz, px, py, pz, pw, parent = samples[last]
+                    lx, ly, lz, px, py, pz, pw, parent = samples[last] or cache.sample_at(last)
                 elif time_ns == earliest:
-                    lx, ly, lz, px, py, pz, pw, parent = samples[start]
+                    lx, ly, lz, px, py, pz, pw, parent = samples[start] or cache.sample_at(start)
                 else:
                     return None
             else:
@@ -111,8 +111,10 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
                     index = _bisect_right(stamps, time_ns, start, index) - 1
                     one_stamp = stamps[index]
                     two_stamp = stamps[index + 1]
-                lx, ly, lz, px, py, pz, pw, parent = samples[index]
-                tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1]
+                lx, ly, lz, px, py, pz, pw, parent = samples[index] or cache.sample_at(index)
+                tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1] or cache.sample_at(
+                    index + 1
+                )
                 if parent1 == parent:
                     # tf2's interpolate: lerp the translation, slerp the rotation.
                     ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)

@@ -18,8 +18,12 @@ Per-frame transform history: tf2's ``TimeCache`` and ``StaticCache``.
 A cache belongs to the *child* frame of a link and stores, per sample, the stamp, the
 translation, the rotation and the parent frame id (the parent may change over time).
 
-Storage is an ``array`` of int64 stamps plus a parallel list of sample tuples, kept in
-ascending stamp order; among equal stamps the most recently inserted sample comes last.  This is
+Storage is compact, one typed array per field in ascending stamp order: int64 stamps, seven
+doubles per sample (translation, then the rotation *as inserted*) and int64 parent ids, plus a
+list that memoises each sample as tf2 stores it (:data:`Sample`, rotation normalised and
+sign-canonicalised bit for bit by :func:`~tf_demo.core.math3d.canonical_quat`), made the first
+time a lookup reads it.  Most samples of a busy ``/tf`` are never read: they cost 80 bytes and no
+canonicalisation.  Among equal stamps the most recently inserted sample comes last.  This is
 tf2's newest-first ``std::list`` read backwards, so every tie-breaking rule of tf2 carries over:
 
 * lookup at the newest stamp returns the newest-inserted sample of that stamp;
@@ -29,7 +33,7 @@ tf2's newest-first ``std::list`` read backwards, so every tie-breaking rule of t
 
 Pruning works as in tf2: on insert, samples older than ``newest - max_storage`` (the newest stamp
 *before* the insert) are dropped, so pruning lags one insert.  Pruned samples are dropped lazily
-by advancing a start index; the arrays are compacted when more than half of them is dead.
+by advancing a start index; the arrays are compacted when more than a quarter of them is dead.
 
 A sample read from a cache is a flat tuple ``(tx, ty, tz, qx, qy, qz, qw, parent_id)``.
 """
@@ -39,12 +43,15 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left
 from bisect import bisect_right
+from struct import Struct
 from typing import ClassVar
 from typing import Literal
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
 from tf_demo.core.lazy_import import lazy_module
+from tf_demo.core.math3d import canonical_quat
+from tf_demo.core.math3d import canonical_quat_batch
 from tf_demo.core.math3d import lerp
 from tf_demo.core.math3d import slerp
 
@@ -71,6 +78,8 @@ __all__ = [
     'TransformStorage',
     'display_time_point',
     'duration_to_sec',
+    'pack_values',
+    'unpack_values',
 ]
 
 DEFAULT_CACHE_TIME_NS = 10_000_000_000
@@ -84,10 +93,16 @@ ERROR_FORWARD_EXTRAPOLATION = 8
 ERROR_NO_DATA_FOR_EXTRAPOLATION = 9
 
 Sample = tuple[float, float, float, float, float, float, float, int]
-#: :meth:`TimeCache.view`: earliest, latest, scale, start, last, stamps, samples.
-CacheView = tuple[int, int, float, int, int, 'array[int]', list[Sample]]
+#: :meth:`TimeCache.view`: earliest, latest, scale, start, last, stamps, samples (None: not read
+#: yet, see :meth:`TimeCache.sample_at`).
+CacheView = tuple[int, int, float, int, int, 'array[int]', list[Sample | None]]
 
 _NS_PER_S = 1_000_000_000
+_VALUES = Struct('7d')
+#: ``pack_values(tx, ty, tz, qx, qy, qz, qw)``: one sample's seven doubles, as a cache stores them.
+pack_values = _VALUES.pack
+#: The inverse of :data:`pack_values`.
+unpack_values = _VALUES.unpack
 
 
 class TransformStorage(NamedTuple):
@@ -111,7 +126,6 @@ INTERVAL_COLUMNS = 22
 class CacheArrays(NamedTuple):
     """A :class:`TimeCache`'s live samples as numpy arrays, with per-interval constants."""
 
-    version: int
     #: ``(K,)`` ascending stamps.
     stamps: npt.NDArray[np.int64]
     #: ``(7, K)``: one contiguous row per component (tx, ty, tz, qx, qy, qz, qw).
@@ -142,6 +156,13 @@ def display_time_point(stamp_ns: int) -> str:
     return f'{duration_to_sec(stamp_ns):.6f}'
 
 
+def _canonical_sample(values: bytes, parent_id: int) -> Sample:
+    """Return :func:`pack_values` bytes as the sample tf2 stores (rotation canonicalised)."""
+    tx, ty, tz, x, y, z, w = unpack_values(values)
+    qx, qy, qz, qw = canonical_quat((x, y, z, w))
+    return (tx, ty, tz, qx, qy, qz, qw, parent_id)
+
+
 def _older_index(  # noqa: PLR0917 (hot path: positional arguments are fastest)
     stamps: array[int], time_ns: int, start: int, end: int, earliest: int, latest: int
 ) -> int:
@@ -167,10 +188,11 @@ class TimeCache:
     __slots__ = (
         '_arrays',
         '_max_storage_ns',
+        '_parents',
         '_samples',
         '_stamps',
         '_start',
-        '_version',
+        '_values',
         '_view',
         'child_id',
         'latest',
@@ -181,9 +203,12 @@ class TimeCache:
         self._max_storage_ns = max_storage_ns
         self.child_id = child_id
         self._stamps: array[int] = array('q')
-        self._samples: list[Sample] = []
+        #: Seven doubles per sample: translation, rotation as inserted.
+        self._values: array[float] = array('d')
+        self._parents: array[int] = array('q')
+        #: Each sample as tf2 stores it, None until first read (:meth:`sample_at`).
+        self._samples: list[Sample | None] = []
         self._start = 0
-        self._version = 0
         self._view: CacheView | None = None
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
         self.latest: tuple[int, int] = (0, 0)
@@ -195,15 +220,28 @@ class TimeCache:
 
     def insert(self, stamp_ns: int, sample: Sample) -> bool:
         """
-        Insert ``sample`` = ``(tx, ty, tz, qx, qy, qz, qw, parent_id)`` at ``stamp_ns``.
+        Insert ``sample`` = ``(tx, ty, tz, qx, qy, qz, qw, parent_id)`` at ``stamp_ns``, as is.
+
+        The sample is stored as given (its rotation already as tf2 stores it); see
+        :meth:`insert_raw` for the rules.
+        """
+        return self.insert_raw(stamp_ns, pack_values(*sample[:7]), sample[7], sample)
+
+    def insert_raw(
+        self, stamp_ns: int, values: bytes, parent_id: int, sample: Sample | None = None
+    ) -> bool:
+        """
+        Insert one sample given as :func:`pack_values` bytes with an inserted (raw) rotation.
 
         This is tf2's ``insertData``: prune first (relative to the newest stamp before the
-        insert), reject data older than ``newest - max_storage``, drop exact duplicates.
+        insert), reject data older than ``newest - max_storage``, drop exact duplicates (equal
+        as tf2 stores them).  The rotation is canonicalised when the sample is first read;
+        ``sample``, when given, is that canonical form already.
 
         :returns: False when the stamp is too old (tf2's TF_OLD_DATA case); True otherwise,
             including for a silently dropped exact duplicate.
         """
-        self._view = None
+        self._view = self._arrays = None
         stamps = self._stamps
         start = self._start
         end = len(stamps)
@@ -212,47 +250,69 @@ class TimeCache:
             latest = stamps[end - 1]
             oldest_kept = latest - self._max_storage_ns
             if stamps[start] < oldest_kept:
-                start = self._start = bisect_left(stamps, oldest_kept, start, end)
-                self._version += 1
+                start += 1  # a steady stream drops one sample per insert
+                if start < end and stamps[start] < oldest_kept:
+                    start = bisect_left(stamps, oldest_kept, start, end)
+                self._start = start
                 if start > 32 and 4 * start > end:
                     del stamps[:start]
+                    del self._values[: 7 * start]
+                    del self._parents[:start]
                     del self._samples[:start]
                     end -= start
                     start = self._start = 0
-            if stamp_ns < oldest_kept:
-                return False
-            if stamp_ns < latest:
-                position = bisect_right(stamps, stamp_ns, start, end)
             if stamp_ns <= latest:
-                samples = self._samples
+                if stamp_ns < oldest_kept:
+                    return False
+                if stamp_ns < latest:
+                    position = bisect_right(stamps, stamp_ns, start, end)
                 index = position - 1
-                while index >= start and stamps[index] == stamp_ns:
-                    if samples[index] == sample:
-                        return True
-                    index -= 1
-        self._version += 1
-        if sample[7] != self.latest[1] and self.latest[1]:
+                if index >= start and stamps[index] == stamp_ns:
+                    if sample is None:
+                        sample = _canonical_sample(values, parent_id)
+                    while index >= start and stamps[index] == stamp_ns:
+                        if self.sample_at(index) == sample:
+                            return True
+                        index -= 1
+        newest_parent = self.latest[1]
+        if parent_id != newest_parent and newest_parent:
             self.mixed = True
         if position == end:
             stamps.append(stamp_ns)
+            self._values.frombytes(values)
+            self._parents.append(parent_id)
             self._samples.append(sample)
-            self.latest = (stamp_ns, sample[7])
+            self.latest = (stamp_ns, parent_id)
         else:
             stamps.insert(position, stamp_ns)
+            self._values[7 * position : 7 * position] = array('d', values)
+            self._parents.insert(position, parent_id)
             self._samples.insert(position, sample)
         return True
 
     def clear(self) -> None:
         """Drop every sample (tf2 clearList)."""
         self._stamps = array('q')
+        self._values = array('d')
+        self._parents = array('q')
         self._samples = []
         self._start = 0
-        self._version += 1
-        self._view = None
+        self._view = self._arrays = None
         self.latest = (0, 0)
         self.mixed = False
 
     # --- queries -------------------------------------------------------------------------
+
+    def sample_at(self, index: int) -> Sample:
+        """Return the sample at ``index`` of the storage as tf2 stores it (made once)."""
+        samples = self._samples
+        sample = samples[index]
+        if sample is None:
+            offset = 7 * index
+            tx, ty, tz, x, y, z, w = self._values[offset : offset + 7]
+            qx, qy, qz, qw = canonical_quat((x, y, z, w))
+            sample = samples[index] = (tx, ty, tz, qx, qy, qz, qw, self._parents[index])
+        return sample
 
     def view(self) -> CacheView:
         """
@@ -261,20 +321,22 @@ class TimeCache:
         ``(earliest, latest, scale, start, last, stamps, samples)``: the oldest and newest
         stamps (``1, 0`` when empty, so that no time is inside), ``(last - start) / (latest -
         earliest)`` for a first guess of the interval, and the live index range
-        ``[start, last]`` of the stamp array and sample list.
+        ``[start, last]`` of the stamp array and sample list (an entry not read yet is None:
+        :meth:`sample_at` makes it).
         """
         view = self._view
         if view is None:
             stamps = self._stamps
             start = self._start
             last = len(stamps) - 1
+            samples = self._samples
             if start > last:
-                view = (1, 0, 0.0, start, last, stamps, self._samples)
+                view = (1, 0, 0.0, start, last, stamps, samples)
             else:
                 earliest = stamps[start]
                 latest = stamps[last]
                 scale = (last - start) / (latest - earliest) if latest != earliest else 0.0
-                view = (earliest, latest, scale, start, last, stamps, self._samples)
+                view = (earliest, latest, scale, start, last, stamps, samples)
             self._view = view
         return view
 
@@ -285,7 +347,7 @@ class TimeCache:
         This is tf2's ``findClosest`` plus ``interpolate``: :func:`~tf_demo.core.math3d.lerp` of
         the translation, :func:`~tf_demo.core.math3d.slerp` of the rotation, never across a
         parent change (the older sample is returned instead).  The lookup walk inlines the same
-        step (``frame_tree.accumulate_side``).  Use :meth:`explain_failure` for tf2's error
+        step (``links.accumulate_links``).  Use :meth:`explain_failure` for tf2's error
         text when None is returned.
         """
         stamps = self._stamps
@@ -294,17 +356,16 @@ class TimeCache:
         if start == end:
             return None
         if time_ns == 0:
-            return self._samples[end - 1]
+            return self.sample_at(end - 1)
         latest = stamps[end - 1]
         if time_ns >= latest:
-            return self._samples[end - 1] if time_ns == latest else None
+            return self.sample_at(end - 1) if time_ns == latest else None
         earliest = stamps[start]
         if time_ns <= earliest:
-            return self._samples[start] if time_ns == earliest else None
+            return self.sample_at(start) if time_ns == earliest else None
         index = _older_index(stamps, time_ns, start, end, earliest, latest)
-        samples = self._samples
-        one = samples[index]
-        two = samples[index + 1]
+        one = self.sample_at(index)
+        two = self.sample_at(index + 1)
         tx0, ty0, tz0, x0, y0, z0, w0, parent = one
         tx1, ty1, tz1, x1, y1, z1, w1, parent1 = two
         if parent1 != parent:
@@ -323,14 +384,14 @@ class TimeCache:
         if start == end:
             return 0
         if time_ns == 0:
-            return self._samples[end - 1][7]
+            return self._parents[end - 1]
         latest = stamps[end - 1]
         if time_ns >= latest:
-            return self._samples[end - 1][7] if time_ns == latest else 0
+            return self._parents[end - 1] if time_ns == latest else 0
         earliest = stamps[start]
         if time_ns <= earliest:
-            return self._samples[start][7] if time_ns == earliest else 0
-        return self._samples[_older_index(stamps, time_ns, start, end, earliest, latest)][7]
+            return self._parents[start] if time_ns == earliest else 0
+        return self._parents[_older_index(stamps, time_ns, start, end, earliest, latest)]
 
     def explain_failure(self, time_ns: int) -> tuple[int, str]:
         """
@@ -392,25 +453,29 @@ class TimeCache:
                 self.child_id,
             )
             for index in range(len(self._stamps) - 1, self._start - 1, -1)
-            for s in (self._samples[index],)
+            for s in (self.sample_at(index),)
         ]
 
     def arrays(self) -> CacheArrays:
         """
         Return the live samples as numpy arrays, ascending by stamp (for the batch walk).
 
-        Cached until the next change (insert, prune, clear); treat them as read-only.  The
+        Kept until the next change (insert, prune, clear); treat them as read-only.  The
         interval constants are the batch walk's slerp, pinned to :func:`math3d.slerp
         <tf_demo.core.math3d.slerp>` by ``test/core/test_math3d_inlined.py``.
         """
         cached = self._arrays
-        if cached is not None and cached.version == self._version:
+        if cached is not None:
             return cached
         start = self._start
         stamps = np.array(self._stamps[start:], dtype=np.int64)
-        table = np.array(self._samples[start:], dtype=np.float64).reshape(-1, 8)
-        values = np.ascontiguousarray(table[:, :7].T)
-        parents = table[:, 7].astype(np.int64)
+        table = np.array(self._values[7 * start :], dtype=np.float64).reshape(-1, 7)
+        canonical_quat_batch(table[:, 3:], out=table[:, 3:])
+        for row, sample in enumerate(self._samples[start:]):
+            if sample is not None:  # stored as given (insert), or read already: the same bits
+                table[row] = sample[:7]
+        values = np.ascontiguousarray(table.T)
+        parents = np.array(self._parents[start:], dtype=np.int64)
         count = stamps.shape[0]
         intervals = np.empty((INTERVAL_COLUMNS, max(count - 1, 0)))
         q0 = values[3:, :-1]
@@ -428,7 +493,6 @@ class TimeCache:
         intervals[17] = np.cos(theta) * intervals[15]
         intervals[18:22] = intervals[10:14] * intervals[15] - q0 * intervals[17]
         arrays = CacheArrays(
-            self._version,
             stamps,
             values,
             parents,
@@ -460,6 +524,12 @@ class StaticCache:
         self._sample = sample
         self.latest = (0, sample[7])
         return True
+
+    def insert_raw(
+        self, stamp_ns: int, values: bytes, parent_id: int, sample: Sample | None = None
+    ) -> bool:
+        """Overwrite the stored sample with :func:`pack_values` bytes (rotation canonicalised)."""
+        return self.insert(stamp_ns, sample or _canonical_sample(values, parent_id))
 
     def clear(self) -> None:
         """Do nothing: tf2 keeps static transforms across ``clear()``."""
