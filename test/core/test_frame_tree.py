@@ -109,7 +109,8 @@ def test_a_chain_is_one_route_up_composed_as_math3d_composes_it(
     top, bottom = tree._ids['f0'], tree._ids[f'f{len(drawn)}']
     shape, source_links, target_links = tree._route(top, bottom, 5 * S)
     assert (shape, len(source_links), target_links) == (ROUTE_UP, len(drawn), ())
-    translation, rotation, stamp = tree._walk(top, bottom, 5 * S)
+    values, stamp = tree._walk(top, bottom, 5 * S)
+    translation, rotation = values[:3], values[3:]
     assert stamp == 5 * S
     assert _close((*translation, *rotation), (*expected[0], *expected[1]))
 
@@ -142,7 +143,7 @@ def test_routes_go_up_down_and_across_with_the_links_tf2s_walk_takes() -> None:
     # d has data from 2 s to 3 s only: at 4 s tf2's walk fails on d.
     with pytest.raises(ExtrapolationException, match='extrapolation into the future'):
         tree._route(ids['e'], ids['d'], 4 * S)
-    assert tree._walk(ids['a'], ids['d'], 2 * S + S // 2)[0][0] == 3.0
+    assert tree._walk(ids['a'], ids['d'], 2 * S + S // 2)[0][0] == 3.0  # translation x
 
 
 def test_a_loop_is_tf2s_lookup_error() -> None:
@@ -188,13 +189,15 @@ def test_latest_common_time_is_the_oldest_newest_stamp_on_the_path() -> None:
 def test_walk_across_the_fork_equals_the_composed_links() -> None:
     tree = _fork()
     ids = tree._ids
-    translation, rotation, stamp = tree._walk(ids['dock'], ids['arm'], 0)
+    values, stamp = tree._walk(ids['dock'], ids['arm'], 0)
+    translation, rotation = values[:3], values[3:]
     assert stamp == 3 * S
     # map_T_arm = odom(3,0,0) * base(0,1,0; 90 deg about z) * arm(1,0,0) = (3, 2, 0); dock is 2 up.
     assert _close(translation, (3.0, 2.0, -2.0))
     assert _close(rotation, _turn(2, math.pi / 2))
     # The inverse walk inverts it.
-    back, back_rotation, _ = tree._walk(ids['arm'], ids['dock'], 3 * S)
+    back_values, _ = tree._walk(ids['arm'], ids['dock'], 3 * S)
+    back, back_rotation = back_values[:3], back_values[3:]
     assert _close(math3d.rotate_vector(rotation, back), (-3.0, -2.0, 2.0))
     assert _close(math3d.quat_multiply(rotation, back_rotation), math3d.IDENTITY_QUAT) or _close(
         math3d.quat_multiply(rotation, back_rotation), (0.0, 0.0, 0.0, -1.0)

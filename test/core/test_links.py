@@ -82,10 +82,10 @@ def test_links_compose_bottom_first() -> None:
 def test_routes_combine_the_two_sides_as_tf2s_walk() -> None:
     source = [_static((1.0, 0.0, 0.0), IDENTITY)]  # top_T_source
     target = [_static((0.0, 2.0, 0.0), QUARTER_TURN)]  # top_T_target
-    assert compose_route((ROUTE_UP, source, ()), S) == ((1.0, 0.0, 0.0), IDENTITY)
+    assert compose_route((ROUTE_UP, source, ()), S) == (1.0, 0.0, 0.0, *IDENTITY)
     down = compose_route((ROUTE_DOWN, (), target), S)
     assert down is not None
-    translation, rotation = down  # (top_T_target)^-1
+    translation, rotation = down[:3], down[3:]  # (top_T_target)^-1
     expected_t, expected_q = math3d.invert((0.0, 2.0, 0.0), QUARTER_TURN)
     assert all(
         math.isclose(a, b, abs_tol=1e-12) for a, b in zip(translation, expected_t, strict=True)
@@ -98,7 +98,7 @@ def test_routes_combine_the_two_sides_as_tf2s_walk() -> None:
     expected = math3d.compose(expected_t, expected_q, (1.0, 0.0, 0.0), IDENTITY)
     assert all(
         math.isclose(a, b, abs_tol=1e-12)
-        for a, b in zip((*across[0], *across[1]), (*expected[0], *expected[1]), strict=True)
+        for a, b in zip(across, (*expected[0], *expected[1]), strict=True)
     )
     # A side without data at the time: no answer (the caller takes tf2's full walk).
     assert compose_route((ROUTE_ACROSS, [_history((2 * S, 1.0))], target), S) is None

@@ -348,3 +348,12 @@ def test_pruning_and_out_of_order_inserts_keep_every_field_aligned():
         k = cache._stamps[index] * 10 // S
         assert cache.sample_at(index) == (float(k), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, k + 1)
         assert cache._parents[index] == k + 1
+
+
+def test_the_newest_sample_is_known_after_every_insert_compaction_included():
+    """``latest`` follows every in-order insert, also the ones that compact the storage."""
+    cache = TimeCache(S)
+    for i in range(1, 3000):
+        cache.insert_raw(i * S // 100, pack_values(float(i), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0), 2)
+        assert cache.latest == (i * S // 100, 2)
+        assert cache.get_data(0) == (float(i), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2)

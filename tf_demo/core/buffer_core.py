@@ -53,6 +53,11 @@ from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import all_frames_as_yaml
 from tf_demo.core.frames_format import FrameInfo
 from tf_demo.core.lazy_import import lazy_module
+from tf_demo.core.links import compose_route
+from tf_demo.core.links import IDENTITY
+from tf_demo.core.links import Transform7
+from tf_demo.core.path_plan import common_time
+from tf_demo.core.path_plan import has_data
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
 from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import duration_to_sec
@@ -380,14 +385,27 @@ class BufferCore(FrameTree):
 
     # ------------------------------------------------------------------ lookups
 
-    def _lookup_locked(self, target: str, source: str, time_ns: int) -> tuple[Vec3, Quat, int]:
-        """tf2's ``lookupTransformImpl``: string short-cut, validation, walk (lock held)."""
+    def _lookup_locked(self, target: str, source: str, time_ns: int) -> tuple[Transform7, int]:
+        """
+        tf2's ``lookupTransformImpl``: string short-cut, validation, walk (lock held).
+
+        :returns: as :meth:`~tf_demo.core.frame_tree.FrameTree._walk`.
+        """
         if target == source:
             if time_ns == 0:
                 cache = self._caches[self._ids.get(target, 0)]
                 if cache is not None:
                     time_ns = cache.latest_stamp_ns
-            return _IDENTITY_T, _IDENTITY_Q, time_ns
+            return IDENTITY, time_ns
+        # The remembered plan, also filed under the names once they were validated.
+        if self._plans_version == self._shape_version:
+            plan = self._plans.get((target, source))
+            if plan is not None:
+                time_ns = time_ns or common_time(plan)
+                if not plan.off_route or has_data(plan.off_route, time_ns):
+                    composed = compose_route(plan.route, time_ns)
+                    if composed is not None:
+                        return composed, time_ns
         ids = self._ids
         # Names never start with '/' once interned (inserts strip one), except '//x' -> '/x',
         # which tf2 also refuses here: check the slash before trusting the id.
@@ -397,6 +415,10 @@ class BufferCore(FrameTree):
         source_id = ids.get(source, 0)
         if not source_id or source[0] == '/':
             source_id = self._validate('lookupTransform argument source_frame', source)
+        if target_id != source_id:
+            plan = self._plan(target_id, source_id)
+            if plan is not None:
+                self._plans[(target, source)] = plan
         return self._walk(target_id, source_id, time_ns)
 
     def lookup_transform(self, target: str, source: str, time_ns: int) -> TransformResult:
@@ -411,12 +433,18 @@ class BufferCore(FrameTree):
         :raises ConnectivityException: if the frames are not connected.
         :raises ExtrapolationException: (a subclass of it) if a link has no data at that time.
         """
-        with self._lock:
-            translation, q, stamp = self._lookup_locked(target, source, time_ns)
+        lock = self._lock
+        lock.acquire()
+        try:
+            values, stamp = self._lookup_locked(target, source, time_ns)
+        finally:
+            lock.release()
+        if values is IDENTITY:
+            return _new_tuple(TransformResult, (_IDENTITY_T, _IDENTITY_Q, stamp))
         # ROS 2 stores the result in a tf2::Transform (a matrix) and reads the quaternion back.
-        if q is not _IDENTITY_Q:
-            q = _canonical_quat(q)
-        return _new_tuple(TransformResult, (translation, q, stamp))  # TransformResult(...)
+        tx, ty, tz, qx, qy, qz, qw = values
+        q = _canonical_quat((qx, qy, qz, qw))
+        return _new_tuple(TransformResult, ((tx, ty, tz), q, stamp))  # TransformResult(...)
 
     def lookup_transform_full(
         self, target: str, target_time_ns: int, source: str, source_time_ns: int, fixed: str
@@ -433,8 +461,10 @@ class BufferCore(FrameTree):
             self._validate('lookupTransform argument target_frame', target)
             self._validate('lookupTransform argument source_frame', source)
             self._validate('lookupTransform argument fixed_frame', fixed)
-            t1, q1, _ = self._lookup_locked(fixed, source, source_time_ns)
-            t2, q2, stamp = self._lookup_locked(target, fixed, target_time_ns)
+            first, _ = self._lookup_locked(fixed, source, source_time_ns)
+            second, stamp = self._lookup_locked(target, fixed, target_time_ns)
+        t1, q1 = first[:3], first[3:]
+        t2, q2 = second[:3], second[3:]
         basis2 = math3d.matrix_from_quat(q2)
         basis = math3d.matrix_times(basis2, math3d.matrix_from_quat(q1))
         ox, oy, oz = math3d.matrix_apply(basis2, t1)
@@ -521,11 +551,12 @@ class BufferCore(FrameTree):
             end_s = min(time_s + interval_s * 0.5, duration_to_sec(latest))
             start_s = max(0.00001 + interval_s, end_s) - interval_s
             corrected = end_s - start_s
-            start_t, start_q, _ = self._lookup_locked(
-                observation, tracking, _time_from_sec(start_s)
-            )
-            end_t, end_q, _ = self._lookup_locked(observation, tracking, _time_from_sec(end_s))
-            ref_t, ref_q, _ = self._lookup_locked(observation, tracking, _time_from_sec(time_s))
+            start, _ = self._lookup_locked(observation, tracking, _time_from_sec(start_s))
+            end, _ = self._lookup_locked(observation, tracking, _time_from_sec(end_s))
+            reference, _ = self._lookup_locked(observation, tracking, _time_from_sec(time_s))
+        start_t, start_q = start[:3], start[3:]
+        end_t, end_q = end[:3], end[3:]
+        ref_t, ref_q = reference[:3], reference[3:]
         start_basis = math3d.matrix_from_quat(start_q)
         delta = math3d.quat_from_matrix(
             math3d.matrix_times(
@@ -639,9 +670,9 @@ class BufferCore(FrameTree):
                 if common_time_failed:
                     failed |= latest_wanted[begin:end]
                 for index in np.flatnonzero(failed).tolist():
-                    t, q, _ = self._walk(target_id, source_id, int(times[begin + index]))
-                    chunk_t[index] = t
-                    chunk_q[index] = q
+                    values, _ = self._walk(target_id, source_id, int(times[begin + index]))
+                    chunk_t[index] = values[:3]
+                    chunk_q[index] = values[3:]
                 translations[begin:end] = chunk_t
                 rotations[begin:end] = math3d.canonical_quat_batch(chunk_q)
         return translations, rotations

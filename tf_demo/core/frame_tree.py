@@ -28,9 +28,7 @@ from __future__ import annotations
 
 from collections.abc import Container
 from typing import NoReturn
-from typing import TYPE_CHECKING
 
-from tf_demo.core import math3d
 from tf_demo.core.exceptions import BackwardExtrapolationException
 from tf_demo.core.exceptions import ConnectivityException
 from tf_demo.core.exceptions import ExtrapolationException
@@ -43,10 +41,12 @@ from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import FrameInfo
 from tf_demo.core.frames_format import NO_AUTHORITY
 from tf_demo.core.links import compose_route
+from tf_demo.core.links import IDENTITY
 from tf_demo.core.links import Route
 from tf_demo.core.links import ROUTE_ACROSS
 from tf_demo.core.links import ROUTE_DOWN
 from tf_demo.core.links import ROUTE_UP
+from tf_demo.core.links import Transform7
 from tf_demo.core.path_plan import common_time
 from tf_demo.core.path_plan import has_data
 from tf_demo.core.path_plan import PathPlan
@@ -56,10 +56,6 @@ from tf_demo.core.time_cache import ERROR_FORWARD_EXTRAPOLATION
 from tf_demo.core.time_cache import ERROR_NO_DATA_FOR_EXTRAPOLATION
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
-
-if TYPE_CHECKING:
-    from tf_demo.core.math3d import Quat
-    from tf_demo.core.math3d import Vec3
 
 __all__ = [
     'MAX_GRAPH_DEPTH',
@@ -76,10 +72,6 @@ _MAX_PLANS = 4096
 NO_PARENT = 'NO_PARENT'
 
 Cache = TimeCache | StaticCache
-
-#: The identity, shared: ``lookup_transform`` tests ``q is _IDENTITY_Q`` to skip canonicalising.
-_IDENTITY_T = math3d.ZERO_VEC
-_IDENTITY_Q = math3d.IDENTITY_QUAT
 
 # How one side of a walk ended (:meth:`FrameTree._climb`).
 SIDE_REACHED_STOP = 0
@@ -119,7 +111,8 @@ class FrameTree:
         self._authority: dict[int, str] = {}
         #: Bumped whenever a link appears, changes parent or static value, or caches are cleared.
         self._shape_version = 0
-        self._plans: dict[tuple[int, int], PathPlan | None] = {}
+        #: Path plans by frame ids, and by frame names once a lookup validated them.
+        self._plans: dict[tuple[int, int] | tuple[str, str], PathPlan | None] = {}
         self._plans_version = 0
 
     # ------------------------------------------------------------------ frame ids
@@ -292,17 +285,18 @@ class FrameTree:
 
     # ------------------------------------------------------------------ the walks
 
-    def _walk(self, target_id: int, source_id: int, time_ns: int) -> tuple[Vec3, Quat, int]:
+    def _walk(self, target_id: int, source_id: int, time_ns: int) -> tuple[Transform7, int]:
         """
         Accumulate ``target_T_source`` at ``time_ns`` (tf2's ``walkToTopParent``).
 
         The route comes from the remembered plan when every link on it has data at that time,
         else from the full walk (:meth:`_route`), which raises tf2's errors.
 
-        :returns: translation, raw (not re-canonicalised) rotation and the resolved time.
+        :returns: the translation and raw (not re-canonicalised) rotation as seven floats
+            (:data:`IDENTITY` itself between a frame and itself), and the resolved time.
         """
         if source_id == target_id:
-            return _IDENTITY_T, _IDENTITY_Q, time_ns
+            return IDENTITY, time_ns
         plan = (
             self._plans.get((target_id, source_id), _UNPLANNED)
             if self._plans_version == self._shape_version
@@ -322,7 +316,7 @@ class FrameTree:
             composed = compose_route(self._route(target_id, source_id, time_ns), time_ns)
             if composed is None:  # pragma: no cover - the walk found data on every link
                 raise AssertionError(self._walk_suffix(source_id, target_id))
-        return composed[0], composed[1], time_ns
+        return composed, time_ns
 
     def _route(self, target_id: int, source_id: int, time_ns: int) -> Route:
         """

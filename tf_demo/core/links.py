@@ -36,16 +36,16 @@ from tf_demo.core import math3d
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-    from tf_demo.core.math3d import Quat
-    from tf_demo.core.math3d import Vec3
     from tf_demo.core.time_cache import StaticCache
     from tf_demo.core.time_cache import TimeCache
 
 __all__ = [
+    'IDENTITY',
     'ROUTE_ACROSS',
     'ROUTE_DOWN',
     'ROUTE_UP',
     'Route',
+    'Transform7',
     'accumulate_links',
     'compose_route',
 ]
@@ -60,10 +60,12 @@ ROUTE_ACROSS = 2
 
 #: ``(shape, source side links, target side links)``, each side bottom first.
 Route = tuple[int, 'Sequence[TimeCache | StaticCache]', 'Sequence[TimeCache | StaticCache]']
+#: A transform as seven floats: translation x, y, z, then rotation x, y, z, w.
 Transform7 = tuple[float, float, float, float, float, float, float]
+#: The identity, one shared object: a lookup tests ``is IDENTITY`` to skip canonicalising.
+IDENTITY: Transform7 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
 
 _bisect_right = bisect_right
-_acos = math.acos
 _sin = math.sin
 
 
@@ -75,7 +77,6 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
     """
     x = y = z = qx = qy = qz = 0.0
     qw = 1.0
-    acos = _acos
     sin = _sin
     for depth, cache in enumerate(links):
         if cache.is_static:
@@ -84,7 +85,7 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
             view = cache._view
             if view is None:
                 view = cache.view()
-            earliest, latest, scale, start, last, stamps, samples = view
+            earliest, latest, scale, start, last, stamps, samples, slerps = view
             if not (earliest < time_ns < latest and time_ns):
                 # At an end of the history, time 0 (the newest sample), or no data.
                 if start > last:
@@ -122,27 +123,15 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
                     lx = keep * lx + ratio * tx1
                     ly = keep * ly + ratio * ty1
                     lz = keep * lz + ratio * tz1
-                    dot = px * x1 + py * y1 + pz * z1 + pw * w1
-                    if dot < 0:
-                        theta = acos(-dot if -dot < 1.0 else 1.0)
-                        if theta != 0.0:
-                            d = 1.0 / sin(theta)
-                            s0 = sin(keep * theta) * d
-                            s1 = -sin(ratio * theta) * d
-                            px = px * s0 + x1 * s1
-                            py = py * s0 + y1 * s1
-                            pz = pz * s0 + z1 * s1
-                            pw = pw * s0 + w1 * s1
-                    else:
-                        theta = acos(dot if dot < 1.0 else 1.0)
-                        if theta != 0.0:
-                            d = 1.0 / sin(theta)
-                            s0 = sin(keep * theta) * d
-                            s1 = sin(ratio * theta) * d
-                            px = px * s0 + x1 * s1
-                            py = py * s0 + y1 * s1
-                            pz = pz * s0 + z1 * s1
-                            pw = pw * s0 + w1 * s1
+                    # tf2's slerp, with the interval's angle and 1 / sin made once per cache.
+                    theta, d, d1 = slerps[index] or cache.slerp_at(index)
+                    if theta != 0.0:
+                        s0 = sin(keep * theta) * d
+                        s1 = sin(ratio * theta) * d1
+                        px = px * s0 + x1 * s1
+                        py = py * s0 + y1 * s1
+                        pz = pz * s0 + z1 * s1
+                        pw = pw * s0 + w1 * s1
         if depth:
             # link * acc.  p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations
             # than tf2's q * v * conj(q), equal to about 1e-16.
@@ -165,9 +154,11 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
     return x, y, z, qx, qy, qz, qw
 
 
-def compose_route(route: Route, time_ns: int) -> tuple[Vec3, Quat] | None:
+def compose_route(route: Route, time_ns: int) -> Transform7 | None:
     """
     Return ``target_T_source`` along ``route`` at ``time_ns`` (raw rotation, as tf2's).
+
+    Seven floats: the translation, then the rotation.
 
     None when a link of the route has no data at ``time_ns``.
     """
@@ -177,21 +168,15 @@ def compose_route(route: Route, time_ns: int) -> tuple[Vec3, Quat] | None:
         if target_side is None:
             return None
         tx, ty, tz, tqx, tqy, tqz, tqw = target_side
-    source_side = accumulate_links(source_links, time_ns) if shape != ROUTE_DOWN else None
     if shape == ROUTE_UP:
-        if source_side is None:
-            return None
-        sx, sy, sz, sqx, sqy, sqz, sqw = source_side
-        return (sx, sy, sz), (sqx, sqy, sqz, sqw)
+        return accumulate_links(source_links, time_ns)
     iq = (-tqx, -tqy, -tqz, tqw)
-    inverse = math3d.rotate_vector(iq, (-tx, -ty, -tz))
+    ix, iy, iz = math3d.rotate_vector(iq, (-tx, -ty, -tz))
     if shape == ROUTE_DOWN:
-        return inverse, iq
+        return ix, iy, iz, -tqx, -tqy, -tqz, tqw
+    source_side = accumulate_links(source_links, time_ns)
     if source_side is None:
         return None
     sx, sy, sz, sqx, sqy, sqz, sqw = source_side
     rx, ry, rz = math3d.rotate_vector(iq, (sx, sy, sz))
-    return (
-        (rx + inverse[0], ry + inverse[1], rz + inverse[2]),
-        math3d.quat_multiply(iq, (sqx, sqy, sqz, sqw)),
-    )
+    return (rx + ix, ry + iy, rz + iz, *math3d.quat_multiply(iq, (sqx, sqy, sqz, sqw)))

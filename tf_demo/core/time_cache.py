@@ -43,6 +43,7 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left
 from bisect import bisect_right
+import math
 from struct import Struct
 from typing import ClassVar
 from typing import Literal
@@ -93,11 +94,16 @@ ERROR_FORWARD_EXTRAPOLATION = 8
 ERROR_NO_DATA_FOR_EXTRAPOLATION = 9
 
 Sample = tuple[float, float, float, float, float, float, float, int]
+#: ``(theta, 1 / sin(theta), +-1 / sin(theta))`` of one interval: :meth:`TimeCache.slerp_at`.
+Slerp = tuple[float, float, float]
 #: :meth:`TimeCache.view`: earliest, latest, scale, start, last, stamps, samples (None: not read
-#: yet, see :meth:`TimeCache.sample_at`).
-CacheView = tuple[int, int, float, int, int, 'array[int]', list[Sample | None]]
+#: yet, see :meth:`TimeCache.sample_at`), slerps (None: not made yet, see
+#: :meth:`TimeCache.slerp_at`).
+CacheView = tuple[int, int, float, int, int, 'array[int]', list[Sample | None], list[Slerp | None]]
 
 _NS_PER_S = 1_000_000_000
+_acos = math.acos
+_sin = math.sin
 _VALUES = Struct('7d')
 #: ``pack_values(tx, ty, tz, qx, qy, qz, qw)``: one sample's seven doubles, as a cache stores them.
 pack_values = _VALUES.pack
@@ -190,6 +196,7 @@ class TimeCache:
         '_max_storage_ns',
         '_parents',
         '_samples',
+        '_slerps',
         '_stamps',
         '_start',
         '_values',
@@ -208,6 +215,8 @@ class TimeCache:
         self._parents: array[int] = array('q')
         #: Each sample as tf2 stores it, None until first read (:meth:`sample_at`).
         self._samples: list[Sample | None] = []
+        #: Per interval to the next sample, its slerp's constants (:meth:`slerp_at`), or None.
+        self._slerps: list[Slerp | None] = []
         self._start = 0
         self._view: CacheView | None = None
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
@@ -245,7 +254,6 @@ class TimeCache:
         stamps = self._stamps
         start = self._start
         end = len(stamps)
-        position = end
         if start < end:
             latest = stamps[end - 1]
             oldest_kept = latest - self._max_storage_ns
@@ -259,8 +267,10 @@ class TimeCache:
                     del self._values[: 7 * start]
                     del self._parents[:start]
                     del self._samples[:start]
+                    del self._slerps[:start]
                     end -= start
                     start = self._start = 0
+            position = end
             if stamp_ns <= latest:
                 if stamp_ns < oldest_kept:
                     return False
@@ -274,6 +284,8 @@ class TimeCache:
                         if self.sample_at(index) == sample:
                             return True
                         index -= 1
+        else:
+            position = end
         newest_parent = self.latest[1]
         if parent_id != newest_parent and newest_parent:
             self.mixed = True
@@ -282,12 +294,17 @@ class TimeCache:
             self._values.frombytes(values)
             self._parents.append(parent_id)
             self._samples.append(sample)
+            self._slerps.append(None)
             self.latest = (stamp_ns, parent_id)
         else:
             stamps.insert(position, stamp_ns)
             self._values[7 * position : 7 * position] = array('d', values)
             self._parents.insert(position, parent_id)
             self._samples.insert(position, sample)
+            slerps = self._slerps
+            slerps.insert(position, None)
+            if position:
+                slerps[position - 1] = None  # that interval now ends at the new sample
         return True
 
     def clear(self) -> None:
@@ -296,6 +313,7 @@ class TimeCache:
         self._values = array('d')
         self._parents = array('q')
         self._samples = []
+        self._slerps = []
         self._start = 0
         self._view = self._arrays = None
         self.latest = (0, 0)
@@ -314,11 +332,28 @@ class TimeCache:
             sample = samples[index] = (tx, ty, tz, qx, qy, qz, qw, self._parents[index])
         return sample
 
+    def slerp_at(self, index: int) -> Slerp:
+        """
+        Return the slerp constants of the interval from sample ``index`` to the next (made once).
+
+        ``(theta, 1 / sin(theta), +-1 / sin(theta))``: tf2's ``slerp`` angle (``acos`` of the
+        clamped absolute dot product, its shortest path) and the factors of the older and the
+        newer rotation, the latter negative when the dot product is; all 0 for a zero angle.
+        """
+        _, _, _, px, py, pz, pw, _ = self.sample_at(index)
+        _, _, _, x1, y1, z1, w1, _ = self.sample_at(index + 1)
+        dot = px * x1 + py * y1 + pz * z1 + pw * w1
+        magnitude = -dot if dot < 0 else dot
+        theta = _acos(magnitude if magnitude < 1.0 else 1.0)
+        d = 1.0 / _sin(theta) if theta != 0.0 else 0.0
+        slerp = self._slerps[index] = (theta, d, -d if dot < 0 else d)
+        return slerp
+
     def view(self) -> CacheView:
         """
         Return (and keep until the next insert or clear) the walk's snapshot of this cache.
 
-        ``(earliest, latest, scale, start, last, stamps, samples)``: the oldest and newest
+        ``(earliest, latest, scale, start, last, stamps, samples, slerps)``: the oldest and newest
         stamps (``1, 0`` when empty, so that no time is inside), ``(last - start) / (latest -
         earliest)`` for a first guess of the interval, and the live index range
         ``[start, last]`` of the stamp array and sample list (an entry not read yet is None:
@@ -331,12 +366,12 @@ class TimeCache:
             last = len(stamps) - 1
             samples = self._samples
             if start > last:
-                view = (1, 0, 0.0, start, last, stamps, samples)
+                view = (1, 0, 0.0, start, last, stamps, samples, self._slerps)
             else:
                 earliest = stamps[start]
                 latest = stamps[last]
                 scale = (last - start) / (latest - earliest) if latest != earliest else 0.0
-                view = (earliest, latest, scale, start, last, stamps, samples)
+                view = (earliest, latest, scale, start, last, stamps, samples, self._slerps)
             self._view = view
         return view
 
