@@ -19,6 +19,7 @@ import signal
 import subprocess
 import sys
 import time
+import weakref
 
 import pytest
 from tf_demo import transport
@@ -165,3 +166,35 @@ def test_parameter_type_error_exits_1_with_rclpys_text(
         "counter.py: error: Trying to set parameter 'period' to '1' of type 'INTEGER', "
         "expecting type 'DOUBLE': period"
     ]
+
+
+def test_an_interrupt_lost_in_a_callback_is_raised_again(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """A Ctrl-C whose KeyboardInterrupt lands in a weakref callback still stops the tool."""
+    handlers = {signum: signal.getsignal(signum) for signum in (signal.SIGINT, signal.SIGTERM)}
+    stop = transport.StopRequest(interrupt=True)
+    stop.install()
+    try:
+
+        class Thing:
+            pass
+
+        def callback(_ref: object) -> None:
+            signal.raise_signal(signal.SIGINT)  # the handler runs here, inside the callback
+
+        def drop_and_wait(thing: Thing) -> None:
+            ref = weakref.ref(thing, callback)
+            del thing  # the callback runs: Python cannot raise out of it
+            for _ in range(1000):
+                time.sleep(0.001)  # the interrupt raised again lands here
+            del ref
+
+        with pytest.raises(KeyboardInterrupt):
+            drop_and_wait(Thing())
+    finally:
+        stop.restore()
+        for signum, handler in handlers.items():
+            signal.signal(signum, handler)
+    assert stop.event.is_set()
+    assert 'Exception ignored' not in capsys.readouterr().err

@@ -84,6 +84,8 @@ __all__ = [
 QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
 
 _LOGGER = logging.getLogger('tf_demo.core')
+#: :meth:`BufferCore.set_transform`'s arguments, in order.
+SetTransformArguments = tuple[str, str, int, Sequence[float], Sequence[float], str, bool]
 _canonical_quat = math3d.canonical_quat
 _pack_values = pack_values
 _unpack_values = unpack_values
@@ -193,7 +195,7 @@ class BufferCore(FrameTree):
             or (total := tx + ty + tz) != total  # NaN, or inf - inf
         ):
             return self._set_transform_checked(
-                parent, child, stamp_ns, translation, rotation, authority, is_static
+                (parent, child, stamp_ns, translation, rotation, authority, is_static)
             )
         lock = self._lock
         lock.acquire()
@@ -217,17 +219,9 @@ class BufferCore(FrameTree):
             callback()
         return True
 
-    def _set_transform_checked(  # noqa: PLR0917 (set_transform's arguments)
-        self,
-        parent: str,
-        child: str,
-        stamp_ns: int,
-        translation: Sequence[float],
-        rotation: Sequence[float],
-        authority: str,
-        is_static: bool,
-    ) -> bool:
+    def _set_transform_checked(self, arguments: SetTransformArguments) -> bool:
         """:meth:`set_transform` with every check, for what its fast path does not take."""
+        parent, child, stamp_ns, translation, rotation, authority, is_static = arguments
         if not isinstance(parent, str) or not isinstance(child, str):
             raise TypeError(
                 f'parent and child must be str, got {type(parent).__name__} and '

@@ -27,6 +27,7 @@ package stays cheap. The world's classes have their own modules, each choosing o
 
 from __future__ import annotations
 
+import _thread
 from collections.abc import Callable
 from collections.abc import Sequence
 import importlib
@@ -34,6 +35,7 @@ import os
 import signal
 import sys
 import threading
+import time
 from types import FrameType
 from types import ModuleType
 from typing import Any
@@ -179,15 +181,36 @@ class StopRequest:
         self.event = threading.Event()
         self.interrupt = interrupt
         self.previous: dict[int, Any] = {}
+        self._previous_unraisable_hook: Callable[[Any], object] | None = None
+        self._interrupt_lost = False
 
     def handle(self, signum: int, _frame: FrameType | None) -> None:
         """Signal handler: the first call requests the stop, later calls are ignored."""
         del signum
         if self.event.is_set():
+            if self._interrupt_lost:  # raised again (:meth:`_unraisable`), where it can be caught
+                self._interrupt_lost = False
+                raise KeyboardInterrupt
             return
         self.event.set()
         if self.interrupt:
             raise KeyboardInterrupt
+
+    def _unraisable(self, unraisable: Any) -> None:
+        """
+        ``sys.unraisablehook``: an interrupt that landed in a callback is raised again.
+
+        A signal handler's exception is raised wherever the main thread is, and Python cannot
+        propagate it out of a weakref callback or a ``__del__`` (an import's module lock has
+        one): it would print "Exception ignored" with a traceback and the stop would be lost.
+        """
+        if isinstance(unraisable.exc_value, KeyboardInterrupt) and self.event.is_set():
+            self._interrupt_lost = True
+            # Not from here: the handler would run at once, inside this hook.
+            threading.Thread(target=_interrupt_main_soon, daemon=True).start()
+            return
+        previous = self._previous_unraisable_hook or sys.__unraisablehook__
+        previous(unraisable)
 
     def install(self) -> None:
         """Install :meth:`handle` for SIGINT and SIGTERM (main thread only, else a no-op)."""
@@ -195,9 +218,15 @@ class StopRequest:
             return
         for signum in (signal.SIGINT, signal.SIGTERM):
             self.previous[signum] = signal.signal(signum, self.handle)
+        if self.interrupt:
+            self._previous_unraisable_hook = sys.unraisablehook
+            sys.unraisablehook = self._unraisable
 
     def restore(self) -> None:
         """Put the previous handlers back; after a stop request, ignore both signals."""
+        if self._previous_unraisable_hook is not None:
+            sys.unraisablehook = self._previous_unraisable_hook
+            self._previous_unraisable_hook = None
         for signum, previous in self.previous.items():
             if self.event.is_set():
                 signal.signal(signum, signal.SIG_IGN)
@@ -206,6 +235,12 @@ class StopRequest:
             default = signal.default_int_handler if signum == signal.SIGINT else signal.SIG_DFL
             signal.signal(signum, default if previous is None else previous)
         self.previous.clear()
+
+
+def _interrupt_main_soon() -> None:
+    """Run the main thread's SIGINT handler shortly (after the caller has returned)."""
+    time.sleep(0.001)
+    _thread.interrupt_main(signal.SIGINT)
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:
