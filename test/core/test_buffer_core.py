@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Callable
 import logging
 import math
+import random
 from typing import Any
 
 import numpy as np
@@ -589,3 +590,75 @@ def test_deep_and_wide_trees_like_tf2_speed_test():
     assert core.lookup_transform('chain0', 'chain100', 0).stamp_ns == 2 * S
     assert core.lookup_transform('leaf3', 'leaf97', 0).translation == (0.0, 0.0, 0.0)
     assert core.lookup_transform('leaf3', 'leaf97', 5 * S).stamp_ns == 5 * S
+
+
+def _messy_inserts(seed: int, count: int) -> list[tuple[Any, ...]]:
+    """Transforms as a busy, partly broken /tf brings them (every kind set_transform refuses)."""
+    rng = random.Random(seed)
+    frames = ['map', 'odom', '/odom', 'base', 'arm', 'hand', '', '/', '//x']
+    inserts: list[tuple[Any, ...]] = []
+    for _ in range(count):
+        parent, child = rng.choice(frames), rng.choice(frames)
+        stamp: Any = rng.choice([rng.randrange(1, 40) * S // 4, 0, 1, 30 * S])
+        turn = rng.uniform(-math.pi, math.pi)
+        rotation: Any = (0.0, 0.0, math.sin(turn / 2), math.cos(turn / 2))
+        translation: Any = (rng.uniform(-5, 5), rng.uniform(-5, 5), 0.0)
+        odd = rng.randrange(12)
+        if odd == 0:
+            translation = (math.nan, 0.0, 0.0)
+        elif odd == 1:
+            rotation = (0.0, 0.0, 0.0, 0.0)
+        elif odd == 2:
+            rotation = (0.0, 0.0, 2.0, 0.0)  # not normalised: tf2 normalises it
+        elif odd == 3:
+            translation = ('x', 0.0, 0.0)  # a TypeError
+        elif odd == 4:
+            stamp = 2.5e9  # a float stamp, as int() takes it
+        elif odd == 5:
+            rotation = (math.inf, 0.0, 0.0, 1.0)
+        inserts.append((parent, child, stamp, translation, rotation))
+    return inserts
+
+
+def _nan_signless(lines: list[tuple[int, str]]) -> list[tuple[int, str]]:
+    """Log lines with ``-nan`` written ``nan``."""
+    return [(level, text.replace('-nan', 'nan')) for level, text in lines]
+
+
+def _answers(core: BufferCore) -> list[object]:
+    """Everything observable of a core: frames, parents, lookups or their errors."""
+    answers: list[object] = [core.all_frames_as_string(), core.all_frames_as_yaml(40 * S)]
+    names = core.frame_ids()
+    for target in names:
+        for source in names:
+            for time_ns in (0, S, 3 * S + S // 3, 7 * S, 29 * S):
+                try:
+                    answers.append(core.lookup_transform(target, source, time_ns))
+                except TransformException as error:
+                    answers.append(f'{type(error).__name__}: {error}')
+    return answers
+
+
+@pytest.mark.parametrize('seed', range(6))
+@pytest.mark.parametrize('is_static', [False, True])
+def test_set_transforms_inserts_as_set_transform_one_by_one(seed: int, is_static: bool) -> None:
+    """The many-at-once insert stores, refuses, logs and fails exactly as single inserts do."""
+    inserts = _messy_inserts(seed, 400)
+    one_log, many_log = Log(), Log()
+    one, many = BufferCore(10 * S, log=one_log), BufferCore(10 * S, log=many_log)
+    one_failures = []
+    for parent, child, stamp, translation, rotation in inserts:
+        try:
+            one.set_transform(parent, child, stamp, translation, rotation, 'auth', is_static)
+        except TypeError as error:
+            one_failures.append((parent, child, str(error)))
+    calls = []
+    many.add_insert_callback(lambda: calls.append(1))
+    failures = many.set_transforms(inserts, 'auth', is_static)
+    assert [(parent, child, str(error)) for parent, child, error in failures] == one_failures
+    assert one_failures  # the scenario has bad input
+    # The sign of a NaN made from inf * 0 depends on CPython's code path (specialised or not).
+    assert _nan_signless(many_log.lines) == _nan_signless(one_log.lines)
+    assert any('TF_OLD_DATA' in text for _, text in one_log.lines) or is_static
+    assert _answers(many) == _answers(one)
+    assert calls

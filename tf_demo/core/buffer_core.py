@@ -34,6 +34,7 @@ sign (``spec/tf2.md`` §9 says they are not; the upstream source wins).
 from __future__ import annotations
 
 from collections.abc import Callable
+from collections.abc import Iterable
 from collections.abc import Sequence
 import logging
 import math
@@ -84,6 +85,9 @@ __all__ = [
 QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
 
 _LOGGER = logging.getLogger('tf_demo.core')
+#: One transform for :meth:`BufferCore.set_transforms`: parent, child, stamp_ns, translation,
+#: rotation.
+InsertTuple = tuple[str, str, int, Sequence[float], Sequence[float]]
 #: :meth:`BufferCore.set_transform`'s arguments, in order.
 SetTransformArguments = tuple[str, str, int, Sequence[float], Sequence[float], str, bool]
 _canonical_quat = math3d.canonical_quat
@@ -218,6 +222,82 @@ class BufferCore(FrameTree):
         for callback in callbacks:
             callback()
         return True
+
+    def set_transforms(
+        self, transforms: Iterable[InsertTuple], authority: str = '', is_static: bool = False
+    ) -> list[tuple[str, str, Exception]]:
+        """
+        Insert many transforms, each exactly as :meth:`set_transform` would, in order.
+
+        ``transforms`` yields ``(parent, child, stamp_ns, translation, rotation)``.  The lock is
+        taken once for the run and the insert callbacks run once at the end (when something was
+        stored) instead of after each transform; the rest, logs included, is the same.  The
+        fast path is :meth:`set_transform`'s, inlined (``test_buffer_core.py`` pins the two to
+        the same results).
+
+        :returns: ``(parent, child, error)`` for each transform whose insert raised (a
+            ``TypeError`` for bad input), the others are inserted all the same.
+        :raises ValueError: for an item that is not five values (before or after it, the
+            others are inserted).
+        """
+        failures: list[tuple[str, str, Exception]] = []
+        known = self._insert_ids
+        caches = self._caches
+        lock = self._lock
+        stored_any = False
+        lock.acquire()
+        try:
+            for parent, child, stamp, translation, rotation in transforms:
+                try:
+                    child_id = known.get(child)
+                    parent_id = known.get(parent)
+                    tx, ty, tz = translation
+                    x, y, z, w = rotation
+                    values = _pack_values(tx, ty, tz, x, y, z, w)
+                    stamp_ns = stamp if type(stamp) is int else int(stamp)
+                    norm2 = x * x + y * y + z * z + w * w
+                except (TypeError, ValueError, struct.error):
+                    child_id = None
+                if (
+                    is_static
+                    or child_id is None
+                    or parent_id is None
+                    or child_id == parent_id
+                    or not 1e-100 < norm2 < 1e100
+                    or (total := tx + ty + tz) != total  # NaN, or inf - inf
+                ):
+                    lock.release()
+                    try:
+                        self._set_transform_checked(
+                            (parent, child, stamp, translation, rotation, authority, is_static)
+                        )
+                    except TypeError as error:
+                        failures.append((parent, child, error))
+                    finally:
+                        lock.acquire()
+                    continue
+                cache = caches[child_id]
+                if cache is None or cache.is_static:
+                    cache = caches[child_id] = TimeCache(self.cache_time_ns, child_id)
+                reshaped = cache.latest[1] != parent_id
+                if cache.insert_raw(stamp_ns, values, parent_id):
+                    stored_any = True
+                    self._authority[child_id] = authority
+                    if reshaped:
+                        self._shape_version += 1
+                else:
+                    lock.release()  # logs are written outside the lock, in order
+                    try:
+                        self._log_old_data(self._names[child_id], stamp_ns, authority)
+                    finally:
+                        lock.acquire()
+            callbacks = self._callbacks_snapshot
+        finally:
+            lock.release()
+        if stored_any:
+            for callback in callbacks:
+                callback()
+        return failures
 
     def _set_transform_checked(self, arguments: SetTransformArguments) -> bool:
         """:meth:`set_transform` with every check, for what its fast path does not take."""

@@ -411,24 +411,18 @@ class Buffer:
         :class:`~tf_demo.ros.TransformListener` decodes each ``TFMessage`` with
         :func:`tf_demo.msgs.cdr.decode_tf_message_transforms` and hands the tuples
         ``(parent, child, stamp_ns, translation, rotation)`` here; they go into
-        :meth:`BufferCore.set_transform <tf_demo.core.BufferCore.set_transform>` with no message
-        object built. Rejected transforms are logged as tf2 logs them, throttled per ``writer``.
+        :meth:`BufferCore.set_transforms <tf_demo.core.BufferCore.set_transforms>` (one lock for
+        the message) with no message object built. Rejected transforms are logged as tf2 logs
+        them, throttled per ``writer``.
 
         :returns: ``(parent, child, error)`` for each transform whose insert raised (the others
             are inserted all the same).
         """
-        insert = self.core.set_transform
-        failures: list[tuple[str, str, Exception]] = []
         self._log_source.writer = writer
         try:
-            for parent, child, stamp_ns, translation, rotation in transforms:
-                try:
-                    insert(parent, child, stamp_ns, translation, rotation, authority, is_static)
-                except Exception as error:
-                    failures.append((parent, child, error))
+            return self.core.set_transforms(transforms, authority, is_static)
         finally:
             self._log_source.writer = None
-        return failures
 
     # ---------------------------------------------------------------- tf2_py's core names
 
