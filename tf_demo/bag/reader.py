@@ -28,15 +28,21 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from collections.abc import Iterator
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import TracebackType
-from typing import Any
+from typing import cast
+from typing import Protocol
+from typing import TYPE_CHECKING
 from typing import TypeVar
 
 from tf_demo.core.buffer_core import BufferCore
 from tf_demo.msgs.cdr import decode_tf_message_transforms
 from tf_demo.msgs.cdr import TransformTuple
+
+if TYPE_CHECKING:
+    from mcap.records import Message as McapMessage
 
 TF_TYPE = 'tf2_msgs/msg/TFMessage'
 DEFAULT_TF_TOPIC = '/tf'
@@ -82,10 +88,40 @@ class ClosesOnExit:
         self.close()
 
 
+class Connection(Protocol):
+    """What :class:`TfBag` reads of a topic's connection (rosbags' ``Connection``, a channel)."""
+
+    @property
+    def id(self) -> int: ...
+    @property
+    def topic(self) -> str: ...
+    @property
+    def msgtype(self) -> str: ...
+    @property
+    def ext(self) -> object: ...
+
+
+class BagReader(Protocol):
+    """What :class:`TfBag` uses of a bag reader (rosbags' ``Reader``, :class:`UnfinishedMcap`)."""
+
+    @property
+    def start_time(self) -> int: ...
+    @property
+    def end_time(self) -> int: ...
+    @property
+    def connections(self) -> Sequence[Connection]: ...
+    def messages(
+        self, connections: list[Connection]
+    ) -> Iterator[tuple[Connection, int, bytes]]: ...
+    def close(self) -> None: ...
+
+
 class TfBag(ClosesOnExit):
     """An open bag's TF connections (use :func:`open_tf_bag`; a context manager)."""
 
-    def __init__(self, path: Path, reader: Any, connections: list[Any], static_topic: str) -> None:
+    def __init__(
+        self, path: Path, reader: BagReader, connections: list[Connection], static_topic: str
+    ) -> None:
         self.path = path
         self._reader = reader
         self._connections = connections
@@ -177,15 +213,18 @@ def open_tf_bag(
     if not bag.exists():
         msg = f'{bag}: no such bag (a directory with metadata.yaml, or a .mcap or .db3 file)'
         raise BagError(msg)
-    reader: Any
+    reader: BagReader
     try:
-        reader = Reader(bag)
-        reader.open()
+        rosbags_reader = Reader(bag)
+        rosbags_reader.open()
+        # Its messages() takes its own connections: the ones TfBag hands back to it.
+        reader = cast('BagReader', rosbags_reader)
     except Exception as error:  # rosbags raises its own errors, and OSError, sqlite3 ...
-        reader = _unfinished_mcap(bag)
-        if reader is None:
+        unfinished = _unfinished_mcap(bag)
+        if unfinished is None:
             msg = f'{bag}: not a readable rosbag2: {error}'
             raise BagError(msg) from None
+        reader = unfinished
     wanted = (tf_topic, static_topic)
     connections = [c for c in reader.connections if c.topic in wanted]
     problem = None
@@ -276,7 +315,7 @@ class _McapChannel:
     id: int
     topic: str
     msgtype: str
-    ext: Any
+    ext: object
 
 
 class UnfinishedMcap:
@@ -294,7 +333,7 @@ class UnfinishedMcap:
         self.start_time = min(times, default=0)
         self.end_time = max(times, default=0) + 1  # rosbags: one past the last
 
-    def _records(self, on_channel: Callable[[_McapChannel], object]) -> Iterator[Any]:
+    def _records(self, on_channel: Callable[[_McapChannel], object]) -> Iterator[McapMessage]:
         """Yield the file's messages (calling ``on_channel`` for each channel), to its cut."""
         from types import SimpleNamespace
 
@@ -320,7 +359,7 @@ class UnfinishedMcap:
                 elif isinstance(record, Message):
                     yield record
 
-    def messages(self, connections: list[Any]) -> Iterator[tuple[Any, int, bytes]]:
+    def messages(self, connections: list[Connection]) -> Iterator[tuple[Connection, int, bytes]]:
         """Yield ``(connection, log time, data)`` of ``connections``, then say it ends early."""
         wanted = {connection.id: connection for connection in connections}
         for message in self._records(lambda channel: None):

@@ -29,11 +29,35 @@ streaming readers (``mcap recover``).
 from __future__ import annotations
 
 from collections.abc import Sequence
+from enum import Enum
 from pathlib import Path
-from typing import Any
+from typing import Protocol
+from typing import TYPE_CHECKING
+from typing import TypeVar
 
 from tf_demo.bag.reader import BagError
 from tf_demo.bag.reader import ClosesOnExit
+
+if TYPE_CHECKING:
+    from rosbags.interfaces import Connection
+    from rosbags.interfaces import Qos
+    from rosbags.interfaces import QosTime
+
+_PolicyT = TypeVar('_PolicyT', bound=Enum)
+
+
+class QosLike(Protocol):
+    """What :func:`rosbags_qos` reads of a ``QoSProfile`` (rclpy's or this package's)."""
+
+    @property
+    def history(self) -> object: ...
+    @property
+    def depth(self) -> int: ...
+    @property
+    def reliability(self) -> object: ...
+    @property
+    def durability(self) -> object: ...
+
 
 #: What each recordable topic holds, and whether its publishers latch it.
 TOPIC_TYPES = {
@@ -50,7 +74,7 @@ STORAGES = ('mcap', 'sqlite3')
 _INFINITE = (9223372036, 854775807)
 
 
-def _offered_qos(latched: bool, depth: int) -> Any:
+def _offered_qos(latched: bool, depth: int) -> Qos:
     """Return the rosbags QoS of a reliable publisher (transient local when ``latched``)."""
     from rosbags.interfaces import Qos
     from rosbags.interfaces import QosDurability
@@ -67,7 +91,7 @@ def _offered_qos(latched: bool, depth: int) -> Any:
     )  # fmt: skip
 
 
-def rosbags_qos(profile: Any) -> Any:
+def rosbags_qos(profile: QosLike) -> Qos:
     """
     Return a ROS ``QoSProfile`` (rclpy's or this package's) as rosbags' ``Qos`` for metadata.
 
@@ -81,11 +105,12 @@ def rosbags_qos(profile: Any) -> Any:
     from rosbags.interfaces import QosReliability
     from rosbags.interfaces import QosTime
 
-    def policy(kind: Any, value: object) -> Any:
+    def policy(kind: type[_PolicyT], value: object) -> _PolicyT:
         name = str(getattr(value, 'name', value)).upper()
-        return getattr(kind, name, kind.SYSTEM_DEFAULT)
+        found: _PolicyT = getattr(kind, name, kind['SYSTEM_DEFAULT'])
+        return found
 
-    def duration(value: object) -> Any:
+    def duration(value: object) -> QosTime:
         nanoseconds = int(getattr(value, 'nanoseconds', 0) or 0)
         infinite = nanoseconds <= 0 or nanoseconds >= _INFINITE[0] * 10**9 + _INFINITE[1]
         return QosTime(*(_INFINITE if infinite else divmod(nanoseconds, 1_000_000_000)))
@@ -130,11 +155,11 @@ class TfBagWriter(ClosesOnExit):
             self._writer.open()
         except Exception as error:  # rosbags' WriterError, OSError ...
             raise BagError(f'{self.path}: cannot write a bag here: {error}') from None
-        self._connections: dict[str, Any] = {}
+        self._connections: dict[str, Connection] = {}
         self.count = 0
 
     def write(
-        self, topic: str, receive_ns: int, data: bytes, offered_qos: Sequence[Any] = ()
+        self, topic: str, receive_ns: int, data: bytes, offered_qos: Sequence[QosLike] = ()
     ) -> None:
         """
         Write one serialised message of ``topic`` received at ``receive_ns``.
@@ -154,16 +179,16 @@ class TfBagWriter(ClosesOnExit):
         pending chunk and flush the file (rosbags buffers up to 1 MiB of messages in memory);
         a crashed MCAP has no summary, and MCAP's streaming readers (``mcap recover``) read it.
         """
-        storage: Any = getattr(self._writer, 'storage', None)
+        storage = getattr(self._writer, 'storage', None)
         connection = getattr(storage, 'conn', None)
         if connection is not None:  # rosbags' Sqlite3Writer
             connection.commit()
         chunk = getattr(storage, 'chunk', None)
-        if chunk is not None and getattr(chunk, 'msgs', None):  # rosbags' McapWriter
+        if storage is not None and getattr(chunk, 'msgs', None):  # rosbags' McapWriter
             storage.close_chunk()
             storage.bio.flush()
 
-    def add_topic(self, topic: str, offered_qos: Sequence[Any] = ()) -> Any:
+    def add_topic(self, topic: str, offered_qos: Sequence[QosLike] = ()) -> Connection:
         """Add ``topic``'s connection now (once; see :meth:`write` for ``offered_qos``)."""
         connection = self._connections.get(topic)
         if connection is None:

@@ -34,11 +34,16 @@ from dataclasses import dataclass
 import math
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
 from tf_demo.msgs.cdr import TransformTuple
+
+if TYPE_CHECKING:
+    from tf_demo.bag.reader import BagRecord
+    from tf_demo.bag.reader import TfBag
+    from tf_demo.transport.node import Node
 
 TOOL = 'tf_play'
 DEFAULT_CLOCK_HZ = 40.0
@@ -107,7 +112,7 @@ def static_key(transform: TransformTuple) -> tuple[str, StaticKey]:
     return child, (parent, stamp_ns, tuple(translation), tuple(rotation))
 
 
-def first_statics(records: Iterable[Any]) -> dict[str, TransformTuple]:
+def first_statics(records: Iterable[BagRecord]) -> dict[str, TransformTuple]:
     """Return each child's first recorded static transform (they hold from the bag's start)."""
     found: dict[str, TransformTuple] = {}
     for record in records:
@@ -119,7 +124,7 @@ def first_statics(records: Iterable[Any]) -> dict[str, TransformTuple]:
 class Player:
     """The publishers and the clock of one playback (see the module docstring)."""
 
-    def __init__(self, node: Any, options: argparse.Namespace) -> None:
+    def __init__(self, node: Node, options: argparse.Namespace) -> None:
         from tf_demo.ros import StaticTransformBroadcaster
         from tf_demo.transport.messages import rosgraph_msgs
         from tf_demo.transport.messages import tf2_msgs
@@ -181,7 +186,7 @@ class Player:
         self.clock.publish(message)
 
 
-def play_once(player: Player, bag: Any) -> bool:
+def play_once(player: Player, bag: TfBag) -> bool:
     """Play the bag through once; False when stopped early."""
     options = player.options
     first_ns = bag.start_ns + round(options.start_offset * 1e9)
@@ -199,7 +204,7 @@ def play_once(player: Player, bag: Any) -> bool:
     return True
 
 
-def _records(bag: Any) -> Iterator[Any]:
+def _records(bag: TfBag) -> Iterator[BagRecord]:
     """Yield the bag's records; a damaged bag ends playback with its one-line error."""
     from tf_demo.bag import BagError
 

@@ -32,10 +32,15 @@ import argparse
 import math
 import sys
 import time
-from typing import Any
+from typing import TYPE_CHECKING
 
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
+
+if TYPE_CHECKING:
+    from tf_demo.msgs._message import Message
+    from tf_demo.transport.node import Node
+    from tf_demo.transport.qos import QoSProfile
 
 TOOL = 'tf_record'
 DEFAULT_TOPICS = ['/tf', '/tf_static']
@@ -68,7 +73,7 @@ def options_error(options: argparse.Namespace) -> str | None:
     return None
 
 
-def _subscription_of(topic: str) -> tuple[Any, Any]:
+def _subscription_of(topic: str) -> tuple[type[Message], QoSProfile | int]:
     """Return the message type and QoS to subscribe to ``topic`` with."""
     from tf_demo.transport.messages import rosgraph_msgs
     from tf_demo.transport.messages import sensor_msgs
@@ -92,7 +97,7 @@ def _subscription_of(topic: str) -> tuple[Any, Any]:
     return sensor_msgs.JointState, 10
 
 
-def _offered_qos(node: Any, topic: str) -> list[Any]:
+def _offered_qos(node: Node, topic: str) -> list[QoSProfile]:
     """Return the QoS profiles the publishers of ``topic`` offer (rosbag2 records them)."""
     try:
         return [info.qos_profile for info in node.get_publishers_info_by_topic(topic)]
@@ -112,7 +117,7 @@ def _record(options: argparse.Namespace) -> int:
         raise ToolError(str(error)) from None
     node = transport.create_node(TOOL)
     clock = node.get_clock()
-    offered: dict[str, list[Any]] = {}  # each topic's publishers' QoS, once they are found
+    offered: dict[str, list[QoSProfile]] = {}  # each topic's publishers' QoS, once they are found
     try:
         for topic in topics:
             msg_type, qos = _subscription_of(topic)

@@ -71,6 +71,10 @@ __all__ = [
     'try_shutdown',
 ]
 
+#: What ``signal.signal`` returns and takes: a handler, ``SIG_DFL``/``SIG_IGN``, or None (set
+#: from C).
+SignalHandler = Callable[[int, FrameType | None], object] | int | signal.Handlers | None
+
 _BACKEND_MODULES = {
     'rclpy': 'tf_demo.transport.rclpy_backend',
     'dds': 'tf_demo.transport.dds_backend',
@@ -141,7 +145,7 @@ def spin_until_future_complete(
     )
 
 
-def create_node(node_name: str, **kwargs: Any) -> Node:
+def create_node(node_name: str, **kwargs: object) -> Node:
     """Create a node of the selected backend (rclpy ``Node`` keyword arguments)."""
     node: Node = backend_module().create_node(node_name, **kwargs)
     return node
@@ -180,8 +184,8 @@ class StopRequest:
     def __init__(self, *, interrupt: bool = False) -> None:
         self.event = threading.Event()
         self.interrupt = interrupt
-        self.previous: dict[int, Any] = {}
-        self._previous_unraisable_hook: Callable[[Any], object] | None = None
+        self.previous: dict[int, SignalHandler] = {}
+        self._previous_unraisable_hook: Callable[[sys.UnraisableHookArgs], object] | None = None
         self._interrupt_lost = False
 
     def handle(self, signum: int, _frame: FrameType | None) -> None:
@@ -196,7 +200,7 @@ class StopRequest:
         if self.interrupt:
             raise KeyboardInterrupt
 
-    def _unraisable(self, unraisable: Any) -> None:
+    def _unraisable(self, unraisable: sys.UnraisableHookArgs) -> None:
         """
         ``sys.unraisablehook``: an interrupt that landed in a callback is raised again.
 
