@@ -203,7 +203,6 @@ class TimeCache:
         '_view',
         'child_id',
         'latest',
-        'mixed',
     )
 
     def __init__(self, max_storage_ns: int = DEFAULT_CACHE_TIME_NS, child_id: int = 0) -> None:
@@ -213,7 +212,9 @@ class TimeCache:
         #: Seven doubles per sample: translation, rotation as inserted.
         self._values: array[float] = array('d')
         self._parents: array[int] = array('q')
-        #: Each sample as tf2 stores it, None until first read (:meth:`sample_at`).
+        #: Each sample as tf2 stores it, None until first read (:meth:`sample_at`).  This list
+        #: and the next may be shorter than the stamps: what is past their end is None too
+        #: (an insert at the end does not touch them; :meth:`view` extends them).
         self._samples: list[Sample | None] = []
         #: Per interval to the next sample, its slerp's constants (:meth:`slerp_at`), or None.
         self._slerps: list[Slerp | None] = []
@@ -221,8 +222,6 @@ class TimeCache:
         self._view: CacheView | None = None
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
         self.latest: tuple[int, int] = (0, 0)
-        #: Some insert since the last clear brought a parent other than the newest sample's.
-        self.mixed = False
         self._arrays: CacheArrays | None = None
 
     # --- insertion -----------------------------------------------------------------------
@@ -286,26 +285,34 @@ class TimeCache:
                         index -= 1
         else:
             position = end
-        newest_parent = self.latest[1]
-        if parent_id != newest_parent and newest_parent:
-            self.mixed = True
         if position == end:
             stamps.append(stamp_ns)
             self._values.frombytes(values)
             self._parents.append(parent_id)
-            self._samples.append(sample)
-            self._slerps.append(None)
             self.latest = (stamp_ns, parent_id)
-        else:
-            stamps.insert(position, stamp_ns)
-            self._values[7 * position : 7 * position] = array('d', values)
-            self._parents.insert(position, parent_id)
-            self._samples.insert(position, sample)
+            if sample is not None:
+                self._memos_up_to(position)
+                self._samples[position] = sample
+            return True
+        stamps.insert(position, stamp_ns)
+        self._values[7 * position : 7 * position] = array('d', values)
+        self._parents.insert(position, parent_id)
+        samples = self._samples
+        if position < len(samples) or sample is not None:
+            self._memos_up_to(position - 1)
+            samples.insert(position, sample)
             slerps = self._slerps
             slerps.insert(position, None)
             if position:
                 slerps[position - 1] = None  # that interval now ends at the new sample
         return True
+
+    def _memos_up_to(self, index: int) -> None:
+        """Make the memo lists reach ``index`` (and the stamps' end, at most)."""
+        size = min(index + 1, len(self._stamps))
+        for memos in (self._samples, self._slerps):
+            if len(memos) < size:
+                memos.extend([None] * (size - len(memos)))
 
     def clear(self) -> None:
         """Drop every sample (tf2 clearList)."""
@@ -317,13 +324,21 @@ class TimeCache:
         self._start = 0
         self._view = self._arrays = None
         self.latest = (0, 0)
-        self.mixed = False
 
     # --- queries -------------------------------------------------------------------------
+
+    @property
+    def mixed(self) -> bool:
+        """Whether the held samples have more than one parent (a scan: for planning only)."""
+        parents = self._parents
+        start = self._start
+        return parents[start:].count(parents[-1]) != len(parents) - start if parents else False
 
     def sample_at(self, index: int) -> Sample:
         """Return the sample at ``index`` of the storage as tf2 stores it (made once)."""
         samples = self._samples
+        if index >= len(samples):
+            self._memos_up_to(index)
         sample = samples[index]
         if sample is None:
             offset = 7 * index
@@ -364,6 +379,7 @@ class TimeCache:
             stamps = self._stamps
             start = self._start
             last = len(stamps) - 1
+            self._memos_up_to(last)
             samples = self._samples
             if start > last:
                 view = (1, 0, 0.0, start, last, stamps, samples, self._slerps)
