@@ -54,11 +54,10 @@ from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import all_frames_as_yaml
 from tf_demo.core.frames_format import FrameInfo
 from tf_demo.core.lazy_import import lazy_module
-from tf_demo.core.links import compose_route
 from tf_demo.core.links import IDENTITY
 from tf_demo.core.links import Transform7
 from tf_demo.core.path_plan import common_time
-from tf_demo.core.path_plan import has_data
+from tf_demo.core.path_plan import compose_plan
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
 from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import duration_to_sec
@@ -91,8 +90,6 @@ InsertTuple = tuple[str, str, int, Sequence[float], Sequence[float]]
 #: :meth:`BufferCore.set_transform`'s arguments, in order.
 SetTransformArguments = tuple[str, str, int, Sequence[float], Sequence[float], str, bool]
 _canonical_quat = math3d.canonical_quat
-_pack_values = pack_values
-_unpack_values = unpack_values
 _new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 #: Lanes per pass of :meth:`BufferCore.lookup_transforms`.
 _BATCH_CHUNK = 4096
@@ -184,7 +181,7 @@ class BufferCore(FrameTree):
             parent_id = known.get(parent)
             tx, ty, tz = translation
             x, y, z, w = rotation
-            values = _pack_values(tx, ty, tz, x, y, z, w)
+            values = pack_values(tx, ty, tz, x, y, z, w)
             if type(stamp_ns) is not int:
                 stamp_ns = int(stamp_ns)
             norm2 = x * x + y * y + z * z + w * w
@@ -253,7 +250,7 @@ class BufferCore(FrameTree):
                     parent_id = known.get(parent)
                     tx, ty, tz = translation
                     x, y, z, w = rotation
-                    values = _pack_values(tx, ty, tz, x, y, z, w)
+                    values = pack_values(tx, ty, tz, x, y, z, w)
                     stamp_ns = stamp if type(stamp) is int else int(stamp)
                     norm2 = x * x + y * y + z * z + w * w
                 except (TypeError, ValueError, struct.error):
@@ -310,7 +307,7 @@ class BufferCore(FrameTree):
         try:
             tx, ty, tz = translation
             x, y, z, w = rotation
-            tx, ty, tz, x, y, z, w = _unpack_values(_pack_values(tx, ty, tz, x, y, z, w))
+            tx, ty, tz, x, y, z, w = unpack_values(pack_values(tx, ty, tz, x, y, z, w))
             stamp_ns = int(stamp_ns)
         except (TypeError, ValueError, struct.error) as error:
             raise TypeError(
@@ -476,10 +473,9 @@ class BufferCore(FrameTree):
             plan = self._plans.get((target, source))
             if plan is not None:
                 time_ns = time_ns or common_time(plan)
-                if not plan.off_route or has_data(plan.off_route, time_ns):
-                    composed = compose_route(plan.route, time_ns)
-                    if composed is not None:
-                        return composed, time_ns
+                composed = compose_plan(plan, time_ns)
+                if composed is not None:
+                    return composed, time_ns
         ids = self._ids
         # Names never start with '/' once interned (inserts strip one), except '//x' -> '/x',
         # which tf2 also refuses here: check the slash before trusting the id.

@@ -48,6 +48,7 @@ from tf_demo.core.links import ROUTE_DOWN
 from tf_demo.core.links import ROUTE_UP
 from tf_demo.core.links import Transform7
 from tf_demo.core.path_plan import common_time
+from tf_demo.core.path_plan import compose_plan
 from tf_demo.core.path_plan import has_data
 from tf_demo.core.path_plan import PathPlan
 from tf_demo.core.path_plan import plan_path
@@ -309,9 +310,7 @@ class FrameTree:
                 time_ns = common_time(plan)
             else:
                 time_ns = self._latest_common_time(target_id, source_id)
-        composed = None
-        if plan is not None and (not plan.off_route or has_data(plan.off_route, time_ns)):
-            composed = compose_route(plan.route, time_ns)
+        composed = None if plan is None else compose_plan(plan, time_ns)
         if composed is None:
             composed = compose_route(self._route(target_id, source_id, time_ns), time_ns)
             if composed is None:  # pragma: no cover - the walk found data on every link

@@ -31,6 +31,7 @@ from typing import NamedTuple
 from typing import TYPE_CHECKING
 
 from tf_demo.core.links import accumulate_links
+from tf_demo.core.links import compose_route
 from tf_demo.core.links import Route
 from tf_demo.core.links import ROUTE_ACROSS
 from tf_demo.core.links import ROUTE_DOWN
@@ -40,9 +41,10 @@ from tf_demo.core.time_cache import StaticCache
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
+    from tf_demo.core.links import Transform7
     from tf_demo.core.time_cache import TimeCache
 
-__all__ = ['PathPlan', 'common_time', 'has_data', 'plan_path']
+__all__ = ['PathPlan', 'common_time', 'compose_plan', 'has_data', 'plan_path']
 
 
 class PathPlan(NamedTuple):
@@ -187,3 +189,15 @@ def has_data(caches: tuple[TimeCache, ...], time_ns: int) -> bool:
             if not stamps[cache._start] <= time_ns <= stamps[-1]:
                 return False
     return True
+
+
+def compose_plan(plan: PathPlan, time_ns: int) -> Transform7 | None:
+    """
+    Return ``target_T_source`` along the plan's route at ``time_ns`` (not 0), or None.
+
+    None when a cache the walk reads has no data at that time: the full walk answers then,
+    with tf2's error.
+    """
+    if plan.off_route and not has_data(plan.off_route, time_ns):
+        return None
+    return compose_route(plan.route, time_ns)

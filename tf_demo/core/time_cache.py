@@ -57,6 +57,8 @@ from tf_demo.core.math3d import lerp
 from tf_demo.core.math3d import slerp
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     import numpy as np
     import numpy.typing as npt
 else:
@@ -162,9 +164,9 @@ def display_time_point(stamp_ns: int) -> str:
     return f'{duration_to_sec(stamp_ns):.6f}'
 
 
-def _canonical_sample(values: bytes, parent_id: int) -> Sample:
-    """Return :func:`pack_values` bytes as the sample tf2 stores (rotation canonicalised)."""
-    tx, ty, tz, x, y, z, w = unpack_values(values)
+def _stored_sample(values: Sequence[float], parent_id: int) -> Sample:
+    """Return seven inserted values as the sample tf2 stores (rotation canonicalised)."""
+    tx, ty, tz, x, y, z, w = values
     qx, qy, qz, qw = canonical_quat((x, y, z, w))
     return (tx, ty, tz, qx, qy, qz, qw, parent_id)
 
@@ -278,7 +280,7 @@ class TimeCache:
                 index = position - 1
                 if index >= start and stamps[index] == stamp_ns:
                     if sample is None:
-                        sample = _canonical_sample(values, parent_id)
+                        sample = _stored_sample(unpack_values(values), parent_id)
                     while index >= start and stamps[index] == stamp_ns:
                         if self.sample_at(index) == sample:
                             return True
@@ -342,9 +344,9 @@ class TimeCache:
         sample = samples[index]
         if sample is None:
             offset = 7 * index
-            tx, ty, tz, x, y, z, w = self._values[offset : offset + 7]
-            qx, qy, qz, qw = canonical_quat((x, y, z, w))
-            sample = samples[index] = (tx, ty, tz, qx, qy, qz, qw, self._parents[index])
+            sample = samples[index] = _stored_sample(
+                self._values[offset : offset + 7], self._parents[index]
+            )
         return sample
 
     def slerp_at(self, index: int) -> Slerp:
@@ -580,7 +582,7 @@ class StaticCache:
         self, stamp_ns: int, values: bytes, parent_id: int, sample: Sample | None = None
     ) -> bool:
         """Overwrite the stored sample with :func:`pack_values` bytes (rotation canonicalised)."""
-        return self.insert(stamp_ns, sample or _canonical_sample(values, parent_id))
+        return self.insert(stamp_ns, sample or _stored_sample(unpack_values(values), parent_id))
 
     def clear(self) -> None:
         """Do nothing: tf2 keeps static transforms across ``clear()``."""
