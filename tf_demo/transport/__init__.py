@@ -178,7 +178,8 @@ class StopRequest:
     executor at once. :meth:`restore` puts the previous handlers back, except after a stop
     request: the process is then on its way out and both signals stay ignored, because Python's
     finalisation resets a Python-level SIGINT handler to ``SIG_DFL`` and a late Ctrl-C there
-    would kill the process (exit -2) before the middleware has finished.
+    would kill the process (exit -2) before the middleware has finished. A ``KeyboardInterrupt``
+    due while rclpy's own code runs is raised once the main thread is out of it.
     """
 
     def __init__(self, *, interrupt: bool = False) -> None:
@@ -186,19 +187,24 @@ class StopRequest:
         self.interrupt = interrupt
         self.previous: dict[int, SignalHandler] = {}
         self._previous_unraisable_hook: Callable[[sys.UnraisableHookArgs], object] | None = None
-        self._interrupt_lost = False
+        self._interrupt_owed = False  # a KeyboardInterrupt still to be raised
 
-    def handle(self, signum: int, _frame: FrameType | None) -> None:
+    def handle(self, signum: int, frame: FrameType | None) -> None:
         """Signal handler: the first call requests the stop, later calls are ignored."""
         del signum
-        if self.event.is_set():
-            if self._interrupt_lost:  # raised again (:meth:`_unraisable`), where it can be caught
-                self._interrupt_lost = False
-                raise KeyboardInterrupt
+        if not self.event.is_set():
+            self.event.set()
+            self._interrupt_owed = self.interrupt
+        if not self._interrupt_owed:
             return
-        self.event.set()
-        if self.interrupt:
-            raise KeyboardInterrupt
+        if _inside_rclpy(frame):
+            # rclpy's own handler has shut its context down, so the tool's loop ends by itself;
+            # an exception raised inside rclpy's code can leave a half-built object behind
+            # (a Task whose __del__ then prints "Exception ignored"). Raise later, outside it.
+            _interrupt_main_after(INTERRUPT_RETRY_S)
+            return
+        self._interrupt_owed = False
+        raise KeyboardInterrupt
 
     def _unraisable(self, unraisable: sys.UnraisableHookArgs) -> None:
         """
@@ -209,9 +215,9 @@ class StopRequest:
         one): it would print "Exception ignored" with a traceback and the stop would be lost.
         """
         if isinstance(unraisable.exc_value, KeyboardInterrupt) and self.event.is_set():
-            self._interrupt_lost = True
+            self._interrupt_owed = True
             # Not from here: the handler would run at once, inside this hook.
-            threading.Thread(target=_interrupt_main_soon, daemon=True).start()
+            _interrupt_main_after(0.001)
             return
         previous = self._previous_unraisable_hook or sys.__unraisablehook__
         previous(unraisable)
@@ -241,10 +247,28 @@ class StopRequest:
         self.previous.clear()
 
 
-def _interrupt_main_soon() -> None:
-    """Run the main thread's SIGINT handler shortly (after the caller has returned)."""
-    time.sleep(0.001)
-    _thread.interrupt_main(signal.SIGINT)
+INTERRUPT_RETRY_S = 0.5
+"""How long a Ctrl-C that arrived inside rclpy waits before its KeyboardInterrupt is retried."""
+
+
+def _inside_rclpy(frame: FrameType | None) -> bool:
+    """Whether ``frame`` or a caller of it is rclpy's code."""
+    while frame is not None:
+        module = frame.f_globals.get('__name__', '')
+        if module == 'rclpy' or module.startswith('rclpy.'):
+            return True
+        frame = frame.f_back
+    return False
+
+
+def _interrupt_main_after(delay_s: float) -> None:
+    """Run the main thread's SIGINT handler again after ``delay_s``, from a helper thread."""
+
+    def interrupt() -> None:
+        time.sleep(delay_s)
+        _thread.interrupt_main(signal.SIGINT)
+
+    threading.Thread(target=interrupt, name='tf_demo-interrupt', daemon=True).start()
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:
