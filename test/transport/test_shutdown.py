@@ -14,6 +14,7 @@
 
 """Ctrl-C and SIGTERM stop a real node process cleanly; config errors exit 1 on one line."""
 
+from collections.abc import Iterator
 from pathlib import Path
 import signal
 import subprocess
@@ -168,45 +169,53 @@ def test_parameter_type_error_exits_1_with_rclpys_text(
     ]
 
 
-def test_an_interrupt_lost_in_a_callback_is_raised_again(
-    capsys: pytest.CaptureFixture[str],
-) -> None:
-    """A Ctrl-C whose KeyboardInterrupt lands in a weakref callback still stops the tool."""
+@pytest.fixture
+def tool_stop_request() -> Iterator[transport.StopRequest]:
+    """
+    A tool's :class:`StopRequest`, for the test to install; the old handlers restored after.
+
+    Installed by the test itself: pytest puts its own ``sys.unraisablehook`` in place for each
+    phase of a test, so one installed while fixtures are set up would not be the one called.
+    """
     handlers = {signum: signal.getsignal(signum) for signum in (signal.SIGINT, signal.SIGTERM)}
     stop = transport.StopRequest(interrupt=True)
-    stop.install()
     try:
-
-        class Thing:
-            pass
-
-        def callback(_ref: object) -> None:
-            signal.raise_signal(signal.SIGINT)  # the handler runs here, inside the callback
-
-        def drop_and_wait(thing: Thing) -> None:
-            ref = weakref.ref(thing, callback)
-            del thing  # the callback runs: Python cannot raise out of it
-            for _ in range(1000):
-                time.sleep(0.001)  # the interrupt raised again lands here
-            del ref
-
-        with pytest.raises(KeyboardInterrupt):
-            drop_and_wait(Thing())
+        yield stop
     finally:
         stop.restore()
         for signum, handler in handlers.items():
             signal.signal(signum, handler)
-    assert stop.event.is_set()
+
+
+def test_an_interrupt_lost_in_a_callback_is_raised_again(
+    tool_stop_request: transport.StopRequest, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A Ctrl-C whose KeyboardInterrupt lands in a weakref callback still stops the tool."""
+    tool_stop_request.install()
+
+    class Thing:
+        pass
+
+    def callback(_ref: object) -> None:
+        signal.raise_signal(signal.SIGINT)  # the handler runs here, inside the callback
+
+    def drop_and_wait(thing: Thing) -> None:
+        ref = weakref.ref(thing, callback)
+        del thing  # the callback runs: Python cannot raise out of it
+        idle_for(1.0)  # the interrupt raised again lands here
+        del ref
+
+    with pytest.raises(KeyboardInterrupt):
+        drop_and_wait(Thing())
+    assert tool_stop_request.event.is_set()
     assert 'Exception ignored' not in capsys.readouterr().err
 
 
 def test_an_interrupt_inside_rclpy_is_raised_after_it_returns(
-    capsys: pytest.CaptureFixture[str],
+    tool_stop_request: transport.StopRequest, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """A Ctrl-C that arrives while rclpy's code runs is raised later, in the tool's own code."""
-    handlers = {signum: signal.getsignal(signum) for signum in (signal.SIGINT, signal.SIGTERM)}
-    stop = transport.StopRequest(interrupt=True)
-    stop.install()
+    tool_stop_request.install()
     # A function whose module is named as rclpy's are: the signal arrives while it runs.
     rclpy_like: dict[str, object] = {'__name__': 'rclpy.executors'}
     exec(
@@ -218,15 +227,10 @@ def test_an_interrupt_inside_rclpy_is_raised_after_it_returns(
     )
     make_task = rclpy_like['make_task']
     assert callable(make_task)
-    try:
-        assert make_task() == 'built'  # not cut short by the interrupt
-        assert stop.event.is_set()
-        with pytest.raises(KeyboardInterrupt):
-            idle_for(10 * transport.INTERRUPT_RETRY_S)  # the tool's own loop: it lands here
-    finally:
-        stop.restore()
-        for signum, handler in handlers.items():
-            signal.signal(signum, handler)
+    assert make_task() == 'built'  # not cut short by the interrupt
+    assert tool_stop_request.event.is_set()
+    with pytest.raises(KeyboardInterrupt):
+        idle_for(10 * transport.INTERRUPT_RETRY_S)  # the tool's own loop: it lands here
     assert 'Exception ignored' not in capsys.readouterr().err
 
 
