@@ -55,6 +55,7 @@ from tf_demo.msgs.convert import TransformStampedLike
 from tf_demo.transport.ros_args import split_ros_args
 
 if TYPE_CHECKING:
+    from tf_demo.transport import StopRequest
     from tf_demo.transport.node import Node
 
 DEMO_NODES = ('static_tf_pub', 'dynamic_tf_pub', 'tf_listener')
@@ -281,14 +282,14 @@ def run(options: argparse.Namespace, ros_args: list[str]) -> int:
     stop = transport.StopRequest(interrupt=True)
     stop.install()
     try:
-        return _run_installed(options, ros_args)
+        return _run_installed(options, ros_args, stop)
     except KeyboardInterrupt:
         return 0
     finally:
         stop.restore()
 
 
-def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
+def _run_installed(options: argparse.Namespace, ros_args: list[str], stop: StopRequest) -> int:
     """:func:`run` with its signal handlers in place."""
     from tf_demo import transport
     from tf_demo.ros.buffer import Buffer
@@ -318,7 +319,7 @@ def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
         executor = SingleThreadedExecutor()
         executor.add_node(node)
         deadline = None if options.duration is None else time.monotonic() + options.duration
-        while deadline is None or time.monotonic() < deadline:
+        while transport.ok() and (deadline is None or time.monotonic() < deadline):
             executor.spin_once(timeout_sec=SPIN_SLICE_S)
             failure = _dead_child(children)
             if failure is not None:
@@ -326,6 +327,11 @@ def _run_installed(options: argparse.Namespace, ros_args: list[str]) -> int:
         listener.unregister()
     except KeyboardInterrupt:
         pass
+    except Exception:
+        # Under rclpy its signal thread shuts the context down from under the loop: what
+        # rclpy raises then (ExternalShutdownException, RCLError) is the stop, not a failure.
+        if not stop.event.is_set():
+            raise
     finally:
         stop_children(children)
         if node is not None:

@@ -178,8 +178,7 @@ class StopRequest:
     executor at once. :meth:`restore` puts the previous handlers back, except after a stop
     request: the process is then on its way out and both signals stay ignored, because Python's
     finalisation resets a Python-level SIGINT handler to ``SIG_DFL`` and a late Ctrl-C there
-    would kill the process (exit -2) before the middleware has finished. A ``KeyboardInterrupt``
-    due while rclpy's own code runs is raised once the main thread is out of it.
+    would kill the process (exit -2) before the middleware has finished.
     """
 
     def __init__(self, *, interrupt: bool = False) -> None:
@@ -189,36 +188,37 @@ class StopRequest:
         self._previous_unraisable_hook: Callable[[sys.UnraisableHookArgs], object] | None = None
         self._interrupt_owed = False  # a KeyboardInterrupt still to be raised
 
-    def handle(self, signum: int, frame: FrameType | None) -> None:
+    def handle(self, signum: int, _frame: FrameType | None) -> None:
         """Signal handler: the first call requests the stop, later calls are ignored."""
         del signum
         if not self.event.is_set():
             self.event.set()
             self._interrupt_owed = self.interrupt
-        if not self._interrupt_owed:
-            return
-        if _inside_rclpy(frame):
-            # rclpy's own handler has shut its context down, so the tool's loop ends by itself;
-            # an exception raised inside rclpy's code can leave a half-built object behind
-            # (a Task whose __del__ then prints "Exception ignored"). Raise later, outside it.
-            _interrupt_main_after(INTERRUPT_RETRY_S)
-            return
-        self._interrupt_owed = False
-        raise KeyboardInterrupt
+        if self._interrupt_owed:
+            self._interrupt_owed = False
+            raise KeyboardInterrupt
 
     def _unraisable(self, unraisable: sys.UnraisableHookArgs) -> None:
         """
-        ``sys.unraisablehook``: an interrupt that landed in a callback is raised again.
+        ``sys.unraisablehook`` while a stop is under way: what the interrupt broke is mended.
 
         A signal handler's exception is raised wherever the main thread is, and Python cannot
         propagate it out of a weakref callback or a ``__del__`` (an import's module lock has
-        one): it would print "Exception ignored" with a traceback and the stop would be lost.
+        one): it would print "Exception ignored" with a traceback and the stop would be lost,
+        so it is raised again. And where it cut an rclpy object's constructor short (a
+        ``Task`` built by the executor), that object's ``__del__`` fails on the attribute it
+        never set: that is the stop's doing, not a fault, and is not printed.
         """
-        if isinstance(unraisable.exc_value, KeyboardInterrupt) and self.event.is_set():
-            self._interrupt_owed = True
-            # Not from here: the handler would run at once, inside this hook.
-            _interrupt_main_after(0.001)
-            return
+        if self.event.is_set():
+            if isinstance(unraisable.exc_value, KeyboardInterrupt):
+                self._interrupt_owed = True
+                # Not from here: the handler would run at once, inside this hook.
+                threading.Thread(target=_interrupt_main_soon, daemon=True).start()
+                return
+            if isinstance(unraisable.exc_value, AttributeError) and _is_rclpy_finaliser(
+                unraisable.object
+            ):
+                return
         previous = self._previous_unraisable_hook or sys.__unraisablehook__
         previous(unraisable)
 
@@ -247,28 +247,17 @@ class StopRequest:
         self.previous.clear()
 
 
-INTERRUPT_RETRY_S = 0.5
-"""How long a Ctrl-C that arrived inside rclpy waits before its KeyboardInterrupt is retried."""
+def _is_rclpy_finaliser(function: object) -> bool:
+    """Whether ``function`` is a ``__del__`` defined in rclpy's code."""
+    module = getattr(function, '__module__', None) or ''
+    name = getattr(function, '__name__', None)
+    return name == '__del__' and (module == 'rclpy' or module.startswith('rclpy.'))
 
 
-def _inside_rclpy(frame: FrameType | None) -> bool:
-    """Whether ``frame`` or a caller of it is rclpy's code."""
-    while frame is not None:
-        module = frame.f_globals.get('__name__', '')
-        if module == 'rclpy' or module.startswith('rclpy.'):
-            return True
-        frame = frame.f_back
-    return False
-
-
-def _interrupt_main_after(delay_s: float) -> None:
-    """Run the main thread's SIGINT handler again after ``delay_s``, from a helper thread."""
-
-    def interrupt() -> None:
-        time.sleep(delay_s)
-        _thread.interrupt_main(signal.SIGINT)
-
-    threading.Thread(target=interrupt, name='tf_demo-interrupt', daemon=True).start()
+def _interrupt_main_soon() -> None:
+    """Run the main thread's SIGINT handler shortly (after the caller has returned)."""
+    time.sleep(0.001)
+    _thread.interrupt_main(signal.SIGINT)
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:
