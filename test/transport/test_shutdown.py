@@ -24,6 +24,7 @@ import weakref
 
 import pytest
 from tf_demo import transport
+from tf_demo.transport.executors import ExternalShutdownException
 from tf_demo.transport.executors import SingleThreadedExecutor
 from tf_demo.transport.messages import std_msgs
 from tf_demo.transport.qos import QoSProfile
@@ -185,6 +186,20 @@ def tool_stop_request() -> Iterator[transport.StopRequest]:
         stop.restore()
         for signum, handler in handlers.items():
             signal.signal(signum, handler)
+
+
+def test_only_a_stop_or_an_external_shutdown_explains_an_error(
+    tool_stop_request: transport.StopRequest,
+) -> None:
+    """What running code raises is the stop's doing once a stop was asked for, else a fault."""
+    external = ExternalShutdownException()
+    assert tool_stop_request.explains(external)  # the context was shut down elsewhere
+    assert not tool_stop_request.explains(RuntimeError('a bug'))
+    tool_stop_request.install()
+    with pytest.raises(KeyboardInterrupt):
+        signal.raise_signal(signal.SIGINT)
+    assert tool_stop_request.explains(RuntimeError('rclpy: the context is not valid'))
+    assert tool_stop_request.explains(external)
 
 
 def test_an_interrupt_lost_in_a_callback_is_raised_again(

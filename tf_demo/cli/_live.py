@@ -292,10 +292,8 @@ def _run_tool_installed(
     except ToolError as error:
         print_error(tool, str(error))
         return 1
-    except Exception:
-        # Under rclpy its signal thread shuts the context down from under the tool: whatever
-        # rclpy raises then (ExternalShutdownException, RCLError) is the stop, not a failure.
-        if stop.event.is_set():
+    except Exception as error:
+        if stop.explains(error):
             return 0
         raise
     finally:

@@ -327,10 +327,8 @@ def _run_installed(options: argparse.Namespace, ros_args: list[str], stop: StopR
         listener.unregister()
     except KeyboardInterrupt:
         pass
-    except Exception:
-        # Under rclpy its signal thread shuts the context down from under the loop: what
-        # rclpy raises then (ExternalShutdownException, RCLError) is the stop, not a failure.
-        if not stop.event.is_set():
+    except Exception as error:
+        if not stop.explains(error):
             raise
     finally:
         stop_children(children)

@@ -198,6 +198,18 @@ class StopRequest:
             self._interrupt_owed = False
             raise KeyboardInterrupt
 
+    def explains(self, error: BaseException) -> bool:
+        """
+        Whether ``error``, raised by running code, is how a stop reached it rather than a fault.
+
+        True once a stop was requested: under rclpy its signal handler shuts the context down
+        from under whatever runs, so executors raise ``ExternalShutdownException`` or, in a
+        narrow race, ``RCLError`` (invalid context). And true for rclpy's
+        ``ExternalShutdownException`` itself: the context was shut down elsewhere, which
+        upstream's nodes treat as a stop too.
+        """
+        return self.event.is_set() or type(error).__name__ == 'ExternalShutdownException'
+
     def _unraisable(self, unraisable: sys.UnraisableHookArgs) -> None:
         """
         ``sys.unraisablehook`` while a stop is under way: what the interrupt broke is mended.
@@ -302,7 +314,7 @@ def _run_installed(
         try:
             node = factory()
         except Exception as error:
-            if stop.event.is_set() or not ok():
+            if stop.explains(error) or not ok():
                 # Ctrl-C or SIGTERM while the node was being built (under rclpy its handler
                 # shuts the context down under the constructor): a stop, not an error.
                 return 0
@@ -319,10 +331,7 @@ def _run_installed(
     except KeyboardInterrupt:
         pass
     except Exception as error:
-        # rclpy's signal handler shuts the context down from under a spin: its executor then
-        # raises ExternalShutdownException, or, in a narrow race, RCLError (invalid context).
-        stopping = stop.event.is_set() or not ok()
-        if type(error).__name__ != 'ExternalShutdownException' and not stopping:
+        if not (stop.explains(error) or not ok()):
             raise
     finally:
         _finish(executor, node)
