@@ -67,6 +67,7 @@ IDENTITY: Transform7 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
 
 _bisect_right = bisect_right
 _sin = math.sin
+_cos = math.cos
 
 
 def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> Transform7 | None:
@@ -78,22 +79,23 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
     x = y = z = qx = qy = qz = 0.0
     qw = 1.0
     sin = _sin
+    cos = _cos
     for depth, cache in enumerate(links):
         if cache.is_static:
-            lx, ly, lz, px, py, pz, pw, parent = cache._sample
+            lx, ly, lz, px, py, pz, pw, _ = cache._sample
         else:
             view = cache._view
             if view is None:
                 view = cache.view()
-            earliest, latest, scale, start, last, stamps, samples, slerps = view
+            earliest, latest, scale, start, last, stamps, samples, intervals = view
             if not (earliest < time_ns < latest and time_ns):
                 # At an end of the history, time 0 (the newest sample), or no data.
                 if start > last:
                     return None
                 if time_ns == latest or not time_ns:
-                    lx, ly, lz, px, py, pz, pw, parent = samples[last] or cache.sample_at(last)
+                    lx, ly, lz, px, py, pz, pw, _ = samples[last] or cache.sample_at(last)
                 elif time_ns == earliest:
-                    lx, ly, lz, px, py, pz, pw, parent = samples[start] or cache.sample_at(start)
+                    lx, ly, lz, px, py, pz, pw, _ = samples[start] or cache.sample_at(start)
                 else:
                     return None
             else:
@@ -112,26 +114,22 @@ def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> 
                     index = _bisect_right(stamps, time_ns, start, index) - 1
                     one_stamp = stamps[index]
                     two_stamp = stamps[index + 1]
-                lx, ly, lz, px, py, pz, pw, parent = samples[index] or cache.sample_at(index)
-                tx1, ty1, tz1, x1, y1, z1, w1, parent1 = samples[index + 1] or cache.sample_at(
-                    index + 1
-                )
-                if parent1 == parent:
+                lx, ly, lz, px, py, pz, pw, _ = samples[index] or cache.sample_at(index)
+                theta, dx, dy, dz, bx, by, bz, bw = intervals[index] or cache.interval_at(index)
+                if theta >= 0.0:  # negative: a parent change, the older sample as it is
                     # tf2's interpolate: lerp the translation, slerp the rotation.
                     ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)
-                    keep = 1.0 - ratio
-                    lx = keep * lx + ratio * tx1
-                    ly = keep * ly + ratio * ty1
-                    lz = keep * lz + ratio * tz1
-                    # tf2's slerp, with the interval's angle and 1 / sin made once per cache.
-                    theta, d, d1 = slerps[index] or cache.slerp_at(index)
-                    if theta != 0.0:
-                        s0 = sin(keep * theta) * d
-                        s1 = sin(ratio * theta) * d1
-                        px = px * s0 + x1 * s1
-                        py = py * s0 + y1 * s1
-                        pz = pz * s0 + z1 * s1
-                        pw = pw * s0 + w1 * s1
+                    lx += ratio * dx
+                    ly += ratio * dy
+                    lz += ratio * dz
+                    if theta:
+                        angle = ratio * theta
+                        c = cos(angle)
+                        s = sin(angle)
+                        px = px * c + bx * s
+                        py = py * c + by * s
+                        pz = pz * c + bz * s
+                        pw = pw * c + bw * s
         if depth:
             # link * acc.  p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations
             # than tf2's q * v * conj(q), equal to about 1e-16.

@@ -96,16 +96,19 @@ ERROR_FORWARD_EXTRAPOLATION = 8
 ERROR_NO_DATA_FOR_EXTRAPOLATION = 9
 
 Sample = tuple[float, float, float, float, float, float, float, int]
-#: ``(theta, 1 / sin(theta), +-1 / sin(theta))`` of one interval: :meth:`TimeCache.slerp_at`.
-Slerp = tuple[float, float, float]
+#: The interpolation constants of one interval between samples: :meth:`TimeCache.interval_at`.
+Interval = tuple[float, float, float, float, float, float, float, float]
 #: :meth:`TimeCache.view`: earliest, latest, scale, start, last, stamps, samples (None: not read
-#: yet, see :meth:`TimeCache.sample_at`), slerps (None: not made yet, see
-#: :meth:`TimeCache.slerp_at`).
-CacheView = tuple[int, int, float, int, int, 'array[int]', list[Sample | None], list[Slerp | None]]
+#: yet, see :meth:`TimeCache.sample_at`), intervals (None: not made yet, see
+#: :meth:`TimeCache.interval_at`).
+CacheView = tuple[
+    int, int, float, int, int, 'array[int]', list[Sample | None], list[Interval | None]
+]
 
 _NS_PER_S = 1_000_000_000
 _acos = math.acos
 _sin = math.sin
+_cos = math.cos
 _VALUES = Struct('7d')
 #: ``pack_values(tx, ty, tz, qx, qy, qz, qw)``: one sample's seven doubles, as a cache stores them.
 pack_values = _VALUES.pack
@@ -195,10 +198,10 @@ class TimeCache:
 
     __slots__ = (
         '_arrays',
+        '_intervals',
         '_max_storage_ns',
         '_parents',
         '_samples',
-        '_slerps',
         '_stamps',
         '_start',
         '_values',
@@ -218,8 +221,9 @@ class TimeCache:
         #: and the next may be shorter than the stamps: what is past their end is None too
         #: (an insert at the end does not touch them; :meth:`view` extends them).
         self._samples: list[Sample | None] = []
-        #: Per interval to the next sample, its slerp's constants (:meth:`slerp_at`), or None.
-        self._slerps: list[Slerp | None] = []
+        #: Per interval to the next sample, its interpolation constants (:meth:`interval_at`),
+        #: or None.
+        self._intervals: list[Interval | None] = []
         self._start = 0
         self._view: CacheView | None = None
         #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
@@ -268,7 +272,7 @@ class TimeCache:
                     del self._values[: 7 * start]
                     del self._parents[:start]
                     del self._samples[:start]
-                    del self._slerps[:start]
+                    del self._intervals[:start]
                     end -= start
                     start = self._start = 0
             position = end
@@ -303,16 +307,16 @@ class TimeCache:
         if position < len(samples) or sample is not None:
             self._memos_up_to(position - 1)
             samples.insert(position, sample)
-            slerps = self._slerps
-            slerps.insert(position, None)
+            intervals = self._intervals
+            intervals.insert(position, None)
             if position:
-                slerps[position - 1] = None  # that interval now ends at the new sample
+                intervals[position - 1] = None  # that interval now ends at the new sample
         return True
 
     def _memos_up_to(self, index: int) -> None:
         """Make the memo lists reach ``index`` (and the stamps' end, at most)."""
         size = min(index + 1, len(self._stamps))
-        for memos in (self._samples, self._slerps):
+        for memos in (self._samples, self._intervals):
             if len(memos) < size:
                 memos.extend([None] * (size - len(memos)))
 
@@ -322,7 +326,7 @@ class TimeCache:
         self._values = array('d')
         self._parents = array('q')
         self._samples = []
-        self._slerps = []
+        self._intervals = []
         self._start = 0
         self._view = self._arrays = None
         self.latest = (0, 0)
@@ -349,32 +353,52 @@ class TimeCache:
             )
         return sample
 
-    def slerp_at(self, index: int) -> Slerp:
+    def interval_at(self, index: int) -> Interval:
         """
-        Return the slerp constants of the interval from sample ``index`` to the next (made once).
+        Return the constants of tf2's interpolation from sample ``index`` to the next (made once).
 
-        ``(theta, 1 / sin(theta), +-1 / sin(theta))``: tf2's ``slerp`` angle (``acos`` of the
-        clamped absolute dot product, its shortest path) and the factors of the older and the
-        newer rotation, the latter negative when the dot product is; all 0 for a zero angle.
+        ``(theta, dx, dy, dz, bx, by, bz, bw)``: tf2's ``slerp`` angle (``acos`` of the clamped
+        absolute dot product, its shortest path), the newer minus the older translation, and
+        the sine coefficient ``b = newer / sin(theta) - older * cot(theta)`` (the newer rotation
+        negated when the dot product is negative; 0 for a zero angle), so that at ``ratio``
+        the translation is ``older + ratio * d`` and the rotation ``older * cos(ratio * theta)
+        + b * sin(ratio * theta)``, tf2's slerp by the sine of a difference.  The same
+        constants as :attr:`CacheArrays.intervals`.  A negative ``theta`` marks a parent change:
+        no interpolation, the older sample as it is.
         """
-        _, _, _, px, py, pz, pw, _ = self.sample_at(index)
-        _, _, _, x1, y1, z1, w1, _ = self.sample_at(index + 1)
-        dot = px * x1 + py * y1 + pz * z1 + pw * w1
-        magnitude = -dot if dot < 0 else dot
-        theta = _acos(magnitude if magnitude < 1.0 else 1.0)
-        d = 1.0 / _sin(theta) if theta != 0.0 else 0.0
-        slerp = self._slerps[index] = (theta, d, -d if dot < 0 else d)
-        return slerp
+        tx0, ty0, tz0, px, py, pz, pw, parent = self.sample_at(index)
+        tx1, ty1, tz1, x1, y1, z1, w1, parent1 = self.sample_at(index + 1)
+        if parent1 != parent:
+            interval = (-1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        else:
+            dot = px * x1 + py * y1 + pz * z1 + pw * w1
+            magnitude = -dot if dot < 0 else dot
+            theta = _acos(magnitude if magnitude < 1.0 else 1.0)
+            if theta != 0.0:
+                d = 1.0 / _sin(theta)
+                d1 = -d if dot < 0 else d
+                cot = _cos(theta) * d
+                b = (
+                    x1 * d1 - px * cot,
+                    y1 * d1 - py * cot,
+                    z1 * d1 - pz * cot,
+                    w1 * d1 - pw * cot,
+                )
+            else:
+                b = (0.0, 0.0, 0.0, 0.0)
+            interval = (theta, tx1 - tx0, ty1 - ty0, tz1 - tz0, *b)
+        self._intervals[index] = interval
+        return interval
 
     def view(self) -> CacheView:
         """
         Return (and keep until the next insert or clear) the walk's snapshot of this cache.
 
-        ``(earliest, latest, scale, start, last, stamps, samples, slerps)``: the oldest and newest
-        stamps (``1, 0`` when empty, so that no time is inside), ``(last - start) / (latest -
-        earliest)`` for a first guess of the interval, and the live index range
-        ``[start, last]`` of the stamp array and sample list (an entry not read yet is None:
-        :meth:`sample_at` makes it).
+        ``(earliest, latest, scale, start, last, stamps, samples, intervals)``: the oldest and
+        newest stamps (``1, 0`` when empty, so that no time is inside), ``(last - start) /
+        (latest - earliest)`` for a first guess of the interval, and the live index range
+        ``[start, last]`` of the stamp array, the sample list (an entry not read yet is None:
+        :meth:`sample_at` makes it) and the interval list (likewise, :meth:`interval_at`).
         """
         view = self._view
         if view is None:
@@ -384,12 +408,12 @@ class TimeCache:
             self._memos_up_to(last)
             samples = self._samples
             if start > last:
-                view = (1, 0, 0.0, start, last, stamps, samples, self._slerps)
+                view = (1, 0, 0.0, start, last, stamps, samples, self._intervals)
             else:
                 earliest = stamps[start]
                 latest = stamps[last]
                 scale = (last - start) / (latest - earliest) if latest != earliest else 0.0
-                view = (earliest, latest, scale, start, last, stamps, samples, self._slerps)
+                view = (earliest, latest, scale, start, last, stamps, samples, self._intervals)
             self._view = view
         return view
 
