@@ -476,6 +476,24 @@ def test_chain_examples(rep105):
     ]
 
 
+def test_chain_prunes_the_two_walks_as_jazzy_does():
+    """
+    Two times: tf2 Jazzy's pruning of the source and target chains, quirks included.
+
+    Found by the differential test against Jazzy's own tf2_py (these answers are Jazzy's): a
+    source that is the fixed frame walks nothing, and nothing of the target's walk is kept; a
+    source walk whose end equals the target walk's end keeps the target's first frame twice.
+    """
+    core = BufferCore()
+    core.set_transform('yy', 'y1', 0, (1.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0), 'a', True)
+    core.set_transform('10', 'c1', 0, (1.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0), 'a', True)
+    core.set_transform('10', 'cy', 0, (0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 1.0), 'a', True)
+    assert core.chain('y1', 25 * S, 'yy', 0, 'yy') == []
+    assert core.chain('10', 10 * S, 'c1', 9 * S, 'cy') == ['cy', 'cy']
+    assert core.chain('10', 10 * S, 'c1', 10 * S, 'cy') == ['cy']
+    assert core.chain('cy', 10 * S, 'c1', 9 * S, '10') == ['c1', '10', 'cy']
+
+
 def test_introspection_helpers(rep105):
     """frame_exists, frame_ids, parent_of and frames_info report the buffer's contents."""
     assert rep105.frame_exists('map')

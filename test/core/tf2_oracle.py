@@ -13,10 +13,13 @@
 # limitations under the License.
 
 """
-Drive tf2's C++ core (Debian's ROS 1 Noetic ``tf2_py``) over a JSON-lines protocol.
+Drive tf2's C++ core through its Python binding ``tf2_py`` over a JSON-lines protocol.
 
-Run this file with ``/usr/bin/python3`` (the interpreter that can ``import tf2_py``); it is not
-part of the package and never runs under the project's virtual environment.
+Two flavours of the same core: Debian's ROS 1 Noetic ``tf2_py`` (run this file with
+``/usr/bin/python3``, the interpreter that can ``import tf2_py`` and ``rospy``), and ROS 2
+Jazzy's own ``tf2_py`` (run it with ``--ros2`` under a sourced Jazzy, where its times are
+``builtin_interfaces`` messages).  It is not part of the package and never runs under the
+project's standalone virtual environment.
 
 Protocol: every input line is a JSON array of scenarios; for each line exactly one output line is
 written, a JSON array with one entry per scenario, each a list with one result per operation.
@@ -54,13 +57,42 @@ import time
 from typing import Any
 
 from geometry_msgs.msg import TransformStamped
-import rospy  # type: ignore[import-not-found]
 import tf2_py
 
+_NS_PER_S = 1_000_000_000
 
-def _time(ns: int) -> Any:
-    """Build a ``rospy.Time`` from integer nanoseconds."""
-    return rospy.Time(ns // 1_000_000_000, ns % 1_000_000_000)
+if '--ros2' in sys.argv[1:]:
+    from builtin_interfaces.msg import Duration as _DurationMsg
+    from builtin_interfaces.msg import Time as _TimeMsg
+
+    def _time(ns: int) -> Any:
+        """Build a ``builtin_interfaces/Time`` from integer nanoseconds."""
+        return _TimeMsg(sec=ns // _NS_PER_S, nanosec=ns % _NS_PER_S)
+
+    def _duration(ns: int) -> Any:
+        """Build a ``builtin_interfaces/Duration`` from integer nanoseconds."""
+        return _DurationMsg(sec=ns // _NS_PER_S, nanosec=ns % _NS_PER_S)
+
+    def _nanoseconds(stamp: Any) -> int:
+        """Return a ``builtin_interfaces/Time`` (or an ``rclpy`` ``Time``) as nanoseconds."""
+        if hasattr(stamp, 'nanoseconds'):  # get_latest_common_time answers an rclpy Time
+            return int(stamp.nanoseconds)
+        return int(stamp.sec) * _NS_PER_S + int(stamp.nanosec)
+
+else:
+    import rospy  # type: ignore[import-not-found]
+
+    def _time(ns: int) -> Any:
+        """Build a ``rospy.Time`` from integer nanoseconds."""
+        return rospy.Time(ns // _NS_PER_S, ns % _NS_PER_S)
+
+    def _duration(ns: int) -> Any:
+        """Build a ``rospy.Duration`` from integer nanoseconds."""
+        return rospy.Duration(ns // _NS_PER_S, ns % _NS_PER_S)
+
+    def _nanoseconds(stamp: Any) -> int:
+        """Return a ``rospy.Time`` as integer nanoseconds."""
+        return int(stamp.to_nsec())
 
 
 def _message(op: list[Any]) -> Any:
@@ -85,7 +117,7 @@ def _transform_result(msg: Any) -> dict[str, Any]:
     return {
         't': [tr.x, tr.y, tr.z],
         'q': [rot.x, rot.y, rot.z, rot.w],
-        'stamp': msg.header.stamp.to_nsec(),
+        'stamp': _nanoseconds(msg.header.stamp),
     }
 
 
@@ -137,7 +169,7 @@ def _run_op(buffer: Any, op: list[Any]) -> dict[str, Any] | None:
                 buffer.lookup_transform_full_core(op[1], _time(op[2]), op[3], _time(op[4]), op[5])
             )
         if kind == 'lct':
-            return {'stamp': buffer.get_latest_common_time(op[1], op[2]).to_nsec()}
+            return {'stamp': _nanoseconds(buffer.get_latest_common_time(op[1], op[2]))}
         if kind == 'chain':
             return {'frames': list(buffer._chain(op[1], _time(op[2]), op[3], _time(op[4]), op[5]))}
     except tf2_py.TransformException as exc:
@@ -150,11 +182,6 @@ def run_scenario(scenario: dict[str, Any]) -> list[dict[str, Any] | None]:
     cache_time_ns = scenario.get('cache_time_ns', 10_000_000_000)
     buffer = tf2_py.BufferCore(_duration(cache_time_ns))
     return [_run_op(buffer, op) for op in scenario['ops']]
-
-
-def _duration(ns: int) -> Any:
-    """Build a ``rospy.Duration`` from integer nanoseconds."""
-    return rospy.Duration(ns // 1_000_000_000, ns % 1_000_000_000)
 
 
 def main() -> None:

@@ -668,7 +668,8 @@ class BufferCore(FrameTree):
         """
         Return the frames between ``source`` and ``target`` as tf2's ``_chainAsVector``.
 
-        The list reproduces tf2's quirks (see ``spec/tf2.md`` §3.8).
+        The list reproduces tf2's quirks (see ``spec/tf2.md`` §3.8), as Jazzy's own core
+        answers them (the differential test drives it in the ROS world).
 
         :raises TransformException: as the underlying walks do.
         """
@@ -680,13 +681,15 @@ class BufferCore(FrameTree):
             source_chain = self._walk_chain(fixed_id, source_id, source_time_ns)
             if source_time_ns != target_time_ns:
                 target_chain = self._walk_chain(target_id, fixed_id, target_time_ns)
-                m = len(target_chain) - 1
-                n = len(source_chain) - 1
-                while m >= 0 and n >= 0:
-                    if source_chain[n] != target_chain[m]:
-                        break
+                # tf2's pruning, to the letter: an empty source chain keeps nothing of the
+                # target's, and chains equal to their ends keep the target's first frame twice.
+                m = len(target_chain)
+                n = len(source_chain)
+                while m > 0 and n > 0:
                     m -= 1
                     n -= 1
+                    if source_chain[n] != target_chain[m]:
+                        break
                 if n > 0:
                     del source_chain[n - 1 :]
                 if m < len(target_chain):

@@ -263,9 +263,13 @@ class Scenario(TypedDict):
     ops: list[Op]
 
 
-def build_scenario(choose: Chooser) -> Scenario:
+def build_scenario(choose: Chooser, *, ros1: bool = True) -> Scenario:
     """
     Build one random scenario: a forest, an insert sequence and queries, as JSON-ready data.
+
+    ``ros1=False`` is for Jazzy's own core as the oracle: it lifts the avoidances below (a
+    second sample with the same stamp and other data, non-unit quaternions, a dynamic link
+    made static, frame-chain queries) and leaves pruning as Jazzy does it (no re-sent samples).
 
     ``{"cache_time_ns": int, "ops": [...]}`` with the operations of ``test/core/tf2_oracle.py``.
     What is generated, and what is deliberately avoided because Debian's ROS 1 oracle differs
@@ -350,6 +354,14 @@ def build_scenario(choose: Chooser) -> Scenario:
                 ]
             )
             dynamic_stamps.append(stamp)
+            if not ros1 and _chance(choose, 8):  # the same stamp again, with other data
+                inserts.append(
+                    ['set', link_parent, child, stamp, _translation(choose), *inserts[-1][5:]]
+                )
+        if not ros1 and _chance(choose, 8):  # the dynamic link becomes static
+            inserts.append(
+                ['set', parent, child, 0, _translation(choose), [0.0, 0.0, 0.0, 1.0], 'x', True]
+            )
     if not inserts:
         inserts.append(
             [
@@ -376,6 +388,9 @@ def build_scenario(choose: Chooser) -> Scenario:
     for position, op in enumerate(inserts):
         if _chance(choose, 8):
             inserts[position] = ['set', '/' + str(op[1]), '/' + str(op[2]), *op[3:]]
+        if not ros1 and _chance(choose, 10):  # not unit length: Jazzy normalises it
+            scale = _pick(choose, [0.5, 2.0, 1.0 + 1e-3])
+            inserts[position] = [*op[:5], [c * scale for c in op[5]], *op[6:]]
     if _chance(choose, 10):
         bad_name = _pick(choose, names)
         bad = _pick(
@@ -431,6 +446,8 @@ def build_scenario(choose: Chooser) -> Scenario:
             return ['can_full', target, time_ns, source, _pick(choose, query_times), query_frame()]
         if roll < 93:
             return ['lct', target, source]
+        if not ros1 and roll < 95:
+            return ['chain', target, time_ns, source, _pick(choose, query_times), query_frame()]
         if roll < 95:
             return ['string']
         if roll < 96:
@@ -447,7 +464,9 @@ def build_scenario(choose: Chooser) -> Scenario:
         cut = choose.integer(0, len(ops))
         ops.insert(cut, ['clear'])
     ops += [query() for _ in range(choose.integer(3, 12))]
-    return {'cache_time_ns': cache_time_ns, 'ops': with_prune_flushes(ops, cache_time_ns)}
+    if ros1:
+        ops = with_prune_flushes(ops, cache_time_ns)
+    return {'cache_time_ns': cache_time_ns, 'ops': ops}
 
 
 def with_prune_flushes(ops: list[Op], cache_time_ns: int) -> list[Op]:
@@ -498,6 +517,6 @@ def with_prune_flushes(ops: list[Op], cache_time_ns: int) -> list[Op]:
 
 
 @st.composite
-def scenarios(draw: st.DrawFn) -> Scenario:
+def scenarios(draw: st.DrawFn, *, ros1: bool = True) -> Scenario:
     """Draw one differential-test scenario (see :func:`build_scenario`)."""
-    return build_scenario(HypothesisChooser(draw))
+    return build_scenario(HypothesisChooser(draw), ros1=ros1)
