@@ -205,8 +205,12 @@ def _run_op(core: BufferCore, op: list[Any]) -> Result | None:
             return {'ok': not text, 'msg': text}
         elif kind == 'can_full':
             full = (op[1], op[2], op[3], op[4], op[5])
-            assert core.can_transform_full(*full) == (not core.transform_error_full(*full))
-            return {'ok': core.can_transform_full(*full)}
+            text = core.transform_error_full(*full)
+            assert core.can_transform_full(*full) == (not text)
+            return {'ok': not text, 'msg': text}
+        elif kind == 'velocity':
+            linear, angular = core.lookup_velocity(op[1], op[2], op[3], op[4])
+            return {'linear': list(linear), 'angular': list(angular)}
         elif kind == 'lct':
             return {'stamp': core.get_latest_common_time(op[1], op[2])}
         elif kind == 'chain':
@@ -340,6 +344,16 @@ def _close(a: list[float], b: list[float]) -> bool:
     )
 
 
+def _close_relative(a: list[float], b: list[float]) -> bool:
+    """
+    Tell whether two velocities agree: finite differences over a short interval scale the
+    rounding of the two lookups they difference, so to 1e-9 relative (1e-9 absolute near 0).
+    """
+    return all(
+        math.isclose(x, y, rel_tol=1e-9, abs_tol=TOLERANCE) for x, y in zip(a, b, strict=True)
+    )
+
+
 def compare(
     op: list[Any], ours: Result | None, theirs: Result | None, *, ros1: bool
 ) -> str | None:
@@ -384,8 +398,17 @@ def compare(
             return f'expected can_transform message {expected_msg!r}, got {ours["msg"]!r}'
         return None
     if kind == 'can_full':
-        # Only the answer: Noetic drops the first half's message (it passes no error_msg).
-        return None if ours['ok'] == theirs['ok'] else f'expected {theirs["ok"]}, got {ours["ok"]}'
+        if ours['ok'] != theirs['ok']:
+            return f'expected {theirs["ok"]}, got {ours["ok"]}'
+        # Against Noetic only the answer: it drops the first half's message (no error_msg).
+        if not ros1 and ours['msg'] != theirs['msg']:
+            return f'expected can_transform message {theirs["msg"]!r}, got {ours["msg"]!r}'
+        return None
+    if kind == 'velocity':
+        for key in ('linear', 'angular'):
+            if not _close_relative(ours[key], theirs[key]):
+                return f'expected {key} velocity {theirs[key]}, got {ours[key]}'
+        return None
     if kind == 'yaml' and ros1:
         return compare_yaml(ours['text'], theirs['text'])
     if kind == 'dot' and ros1:

@@ -219,3 +219,14 @@ def test_matrix_products_match_numpy():
     assert np.allclose(m3.matrix_apply(a, v), np.array(a) @ np.array(v), rtol=0, atol=1e-15)
     assert m3.matrix_transpose(a) == tuple(map(tuple, np.array(a).T.tolist()))
     assert np.allclose(m3.matrix_times(m3.matrix_transpose(a), a), np.eye(3), atol=1e-15)
+
+
+def test_matrix_inverse_matches_numpy_and_the_transpose_of_a_rotation():
+    """matrix_inverse (tf2's cofactors) inverts a matrix; a rotation's inverse is its transpose."""
+    rng = random.Random(31)
+    rows = [(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2)) for _ in range(3)]
+    general = (rows[0], rows[1], rows[2])
+    expected = np.linalg.inv(np.array(general))
+    assert np.allclose(m3.matrix_inverse(general), expected, rtol=1e-12, atol=1e-12)
+    rotation = m3.matrix_from_quat(_random_quat(rng))
+    assert np.allclose(m3.matrix_inverse(rotation), np.array(rotation).T, rtol=0, atol=1e-15)

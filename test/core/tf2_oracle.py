@@ -35,6 +35,8 @@ A scenario is ``{"cache_time_ns": int, "ops": [op, ...]}``; the operations are:
 ``["can", target, source, time_ns]`` and ``["can_full", target, tt, source, st, fixed]``
     result ``{"ok": bool, "msg": text}``; ``can`` adds ``"exists": [bool, bool]`` for its
     target and source (``_frameExists``).
+``["velocity", tracking, observation, time_ns, averaging_ns]`` (Jazzy only)
+    result ``{"linear": [3], "angular": [3]}`` (``lookupVelocityCore``) or an exception object.
 ``["lct", target, source]``
     result ``{"stamp": ns}`` or an exception object.
 ``["chain", target, target_time_ns, source, source_time_ns, fixed]``
@@ -168,6 +170,11 @@ def _run_op(buffer: Any, op: list[Any]) -> dict[str, Any] | None:
             return _transform_result(
                 buffer.lookup_transform_full_core(op[1], _time(op[2]), op[3], _time(op[4]), op[5])
             )
+        if kind == 'velocity':
+            linear, angular = buffer.lookupVelocityCore(
+                op[1], op[2], _time(op[3]), _duration(op[4])
+            )
+            return {'linear': list(linear), 'angular': list(angular)}
         if kind == 'lct':
             return {'stamp': _nanoseconds(buffer.get_latest_common_time(op[1], op[2]))}
         if kind == 'chain':

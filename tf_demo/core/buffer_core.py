@@ -629,9 +629,7 @@ class BufferCore(FrameTree):
         ref_t, ref_q = reference[:3], reference[3:]
         start_basis = math3d.matrix_from_quat(start_q)
         delta = math3d.quat_from_matrix(
-            math3d.matrix_times(
-                math3d.matrix_transpose(start_basis), math3d.matrix_from_quat(end_q)
-            )
+            math3d.matrix_times(math3d.matrix_inverse(start_basis), math3d.matrix_from_quat(end_q))
         )
         w = delta[3]
         s_squared = 1.0 - w * w

@@ -81,6 +81,7 @@ __all__ = [
     'matrix_from_quat',
     'matrix_from_quat_batch',
     'matrix_from_rpy',
+    'matrix_inverse',
     'matrix_times',
     'matrix_transpose',
     'quat_conjugate',
@@ -340,6 +341,22 @@ def matrix_apply(m: Matrix3, v: Vec3) -> Vec3:
 def matrix_transpose(m: Matrix3) -> Matrix3:
     """Return the transpose of ``m`` (the inverse of a rotation matrix)."""
     return ((m[0][0], m[1][0], m[2][0]), (m[0][1], m[1][1], m[2][1]), (m[0][2], m[1][2], m[2][2]))
+
+
+def matrix_inverse(m: Matrix3) -> Matrix3:
+    """
+    Return the inverse of ``m`` by cofactors, with tf2's ``Matrix3x3::inverse`` arithmetic.
+
+    For a rotation it equals :func:`matrix_transpose` to rounding; tf2's velocity uses this.
+    """
+    (a, b, c), (d, e, f), (g, h, i) = m
+    co_x, co_y, co_z = e * i - f * h, f * g - d * i, d * h - e * g
+    s = 1.0 / (a * co_x + b * co_y + c * co_z)
+    return (
+        (co_x * s, (c * h - b * i) * s, (b * f - c * e) * s),
+        (co_y * s, (a * i - c * g) * s, (c * d - a * f) * s),
+        (co_z * s, (b * g - a * h) * s, (a * e - b * d) * s),
+    )
 
 
 def quat_from_matrix(m: Matrix3) -> Quat:

@@ -269,7 +269,8 @@ def build_scenario(choose: Chooser, *, ros1: bool = True) -> Scenario:
 
     ``ros1=False`` is for Jazzy's own core as the oracle: it lifts the avoidances below (a
     second sample with the same stamp and other data, non-unit quaternions, a dynamic link
-    made static, frame-chain queries) and leaves pruning as Jazzy does it (no re-sent samples).
+    made static, frame-chain queries), adds velocity queries (ROS 1's binding has none) and
+    leaves pruning as Jazzy does it (no re-sent samples).
 
     ``{"cache_time_ns": int, "ops": [...]}`` with the operations of ``test/core/tf2_oracle.py``.
     What is generated, and what is deliberately avoided because Debian's ROS 1 oracle differs
@@ -447,6 +448,9 @@ def build_scenario(choose: Chooser, *, ros1: bool = True) -> Scenario:
         if roll < 93:
             return ['lct', target, source]
         if not ros1 and roll < 95:
+            if _chance(choose, 50):
+                averaging = _pick(choose, [step, 2 * step, 10_000_000, 1_000_000_000])
+                return ['velocity', target, source, time_ns, averaging]
             return ['chain', target, time_ns, source, _pick(choose, query_times), query_frame()]
         if roll < 95:
             return ['string']
