@@ -524,6 +524,25 @@ def test_lookup_velocity_translation_and_rotation():
     assert angular == pytest.approx((0.0, 0.0, 0.5), abs=1e-6)
 
 
+def test_lookup_velocity_times_and_divisions_are_tf2s():
+    """
+    Two cases the differential test against Jazzy's own core found (Jazzy's answers).
+
+    tf2 turns the window's start into nanoseconds with ``std::round`` (halves away from zero):
+    here it lands on the first sample, not half a nanosecond before it.  And a window that
+    vanishes in double seconds at today's epoch makes tf2 divide by zero: NaN, not an error.
+    """
+    core = BufferCore()
+    core.set_transform('bc', 'a0', 123_456_789, (0.0, 0.0, 0.0), IDENTITY)
+    core.set_transform('bc', 'a0', 2_098_765_413, (1.0, 0.0, 0.0), IDENTITY)
+    linear, _ = core.lookup_velocity('bc', 'a0', 185_185_183, 123_456_789)
+    assert linear[0] == pytest.approx(-1.0 / 1.975308624, rel=1e-6)
+    epoch = 1_764_000_000_123_456_789
+    core.set_transform('by', 'c0', epoch, (1.0, 2.0, 3.0), IDENTITY)
+    linear, angular = core.lookup_velocity('c0', 'c0', epoch, 2)
+    assert all(math.isnan(value) for value in (*linear, *angular))
+
+
 def test_insert_callbacks_run_after_each_insert():
     """Callbacks run once per stored transform and can be removed."""
     core = BufferCore()

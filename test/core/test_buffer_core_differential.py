@@ -350,7 +350,8 @@ def _close_relative(a: list[float], b: list[float]) -> bool:
     rounding of the two lookups they difference, so to 1e-9 relative (1e-9 absolute near 0).
     """
     return all(
-        math.isclose(x, y, rel_tol=1e-9, abs_tol=TOLERANCE) for x, y in zip(a, b, strict=True)
+        math.isclose(x, y, rel_tol=1e-9, abs_tol=TOLERANCE) or (math.isnan(x) and math.isnan(y))
+        for x, y in zip(a, b, strict=True)
     )
 
 

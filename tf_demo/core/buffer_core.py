@@ -120,10 +120,26 @@ def _c_float(value: float) -> str:
 
 
 def _time_from_sec(seconds: float) -> int:
-    """Convert seconds to nanoseconds as tf2's ``timeFromSec`` (floor, then rounded ns)."""
+    """
+    Convert seconds to nanoseconds as tf2's ``timeFromSec``: floor, then ``std::round`` ns.
+
+    ``std::round`` takes halves away from zero (Python's ``round`` takes them to even).
+    """
     sec = math.floor(seconds)
-    nsec = round((seconds - sec) * 1e9)
-    return int(sec) * 1_000_000_000 + int(nsec)
+    nanoseconds = (seconds - sec) * 1e9  # in [0, 1e9]
+    whole = math.floor(nanoseconds)
+    if nanoseconds - whole >= 0.5:
+        whole += 1
+    return int(sec) * 1_000_000_000 + whole
+
+
+def _c_divide(numerator: float, denominator: float) -> float:
+    """Return ``numerator / denominator`` as C++ doubles divide: by zero gives inf or NaN."""
+    if denominator:
+        return numerator / denominator
+    if not numerator or math.isnan(numerator):
+        return math.nan
+    return math.copysign(math.inf, numerator) * math.copysign(1.0, denominator)
 
 
 class BufferCore(FrameTree):
@@ -640,12 +656,12 @@ class BufferCore(FrameTree):
             axis = (delta[0] / s, delta[1] / s, delta[2] / s)
         angle = 2.0 * math.acos(max(-1.0, min(1.0, w)))
         ox, oy, oz = math3d.matrix_apply(start_basis, axis)
-        scale = angle / corrected
+        scale = _c_divide(angle, corrected)  # tf2 divides by a zero interval too: NaN, inf
         twist_rot = (ox * scale, oy * scale, oz * scale)
         twist_vel = (
-            (end_t[0] - start_t[0]) / corrected,
-            (end_t[1] - start_t[1]) / corrected,
-            (end_t[2] - start_t[2]) / corrected,
+            _c_divide(end_t[0] - start_t[0], corrected),
+            _c_divide(end_t[1] - start_t[1], corrected),
+            _c_divide(end_t[2] - start_t[2], corrected),
         )
         ref_basis = math3d.matrix_from_quat(ref_q)
         out_rot = math3d.matrix_apply(ref_basis, twist_rot)

@@ -269,8 +269,8 @@ def build_scenario(choose: Chooser, *, ros1: bool = True) -> Scenario:
 
     ``ros1=False`` is for Jazzy's own core as the oracle: it lifts the avoidances below (a
     second sample with the same stamp and other data, non-unit quaternions, a dynamic link
-    made static, frame-chain queries), adds velocity queries (ROS 1's binding has none) and
-    leaves pruning as Jazzy does it (no re-sent samples).
+    made static, frame-chain queries, stamps of today's epoch), adds velocity queries (ROS
+    1's binding has none) and leaves pruning as Jazzy does it (no re-sent samples).
 
     ``{"cache_time_ns": int, "ops": [...]}`` with the operations of ``test/core/tf2_oracle.py``.
     What is generated, and what is deliberately avoided because Debian's ROS 1 oracle differs
@@ -294,7 +294,10 @@ def build_scenario(choose: Chooser, *, ros1: bool = True) -> Scenario:
     step = _pick(choose, [1, 1000, 100_000_000, 1_000_000_000, 123_456_789])
     # Stamps stay below 1e6 s: the oracle's Python binding passes times to C++ as double seconds
     # (``rospy.Time.to_sec``), which keeps every nanosecond only for small epochs.
-    base = _pick(choose, [0, 0, 1_000_000_000_000, 123_456_789_000_000])
+    bases = [0, 0, 1_000_000_000_000, 123_456_789_000_000]
+    if not ros1:  # Jazzy's binding passes sec and nanosec: today's epoch times are exact
+        bases.append(1_764_000_000_123_456_789)
+    base = _pick(choose, bases)
     cache_time_ns = _pick(choose, [10_000_000_000, 10_000_000_000, 3 * step, 6 * step])
     frame_count = choose.integer(2, 20) if _chance(choose, 10) else choose.integer(2, 8)
     names = _shuffled(choose, _NAME_POOL)[:frame_count]
