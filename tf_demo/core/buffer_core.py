@@ -60,11 +60,12 @@ from tf_demo.core.path_plan import common_time
 from tf_demo.core.path_plan import compose_plan
 from tf_demo.core.time_cache import DEFAULT_CACHE_TIME_NS
 from tf_demo.core.time_cache import display_time_point
-from tf_demo.core.time_cache import duration_to_sec
 from tf_demo.core.time_cache import pack_values
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 from tf_demo.core.time_cache import unpack_values
+from tf_demo.core.velocity import twist
+from tf_demo.core.velocity import velocity_window
 
 if TYPE_CHECKING:
     import numpy as np
@@ -117,29 +118,6 @@ def _c_float(value: float) -> str:
     if math.isnan(value):
         return '-nan' if math.copysign(1.0, value) < 0 else 'nan'
     return f'{value:f}'
-
-
-def _time_from_sec(seconds: float) -> int:
-    """
-    Convert seconds to nanoseconds as tf2's ``timeFromSec``: floor, then ``std::round`` ns.
-
-    ``std::round`` takes halves away from zero (Python's ``round`` takes them to even).
-    """
-    sec = math.floor(seconds)
-    nanoseconds = (seconds - sec) * 1e9  # in [0, 1e9]
-    whole = math.floor(nanoseconds)
-    if nanoseconds - whole >= 0.5:
-        whole += 1
-    return int(sec) * 1_000_000_000 + whole
-
-
-def _c_divide(numerator: float, denominator: float) -> float:
-    """Return ``numerator / denominator`` as C++ doubles divide: by zero gives inf or NaN."""
-    if denominator:
-        return numerator / denominator
-    if not numerator or math.isnan(numerator):
-        return math.nan
-    return math.copysign(math.inf, numerator) * math.copysign(1.0, denominator)
 
 
 class BufferCore(FrameTree):
@@ -632,47 +610,11 @@ class BufferCore(FrameTree):
                 )
             except TransformException:
                 latest = 0
-            time_s = duration_to_sec(time_ns)
-            interval_s = duration_to_sec(averaging_ns)
-            end_s = min(time_s + interval_s * 0.5, duration_to_sec(latest))
-            start_s = max(0.00001 + interval_s, end_s) - interval_s
-            corrected = end_s - start_s
-            start, _ = self._lookup_locked(observation, tracking, _time_from_sec(start_s))
-            end, _ = self._lookup_locked(observation, tracking, _time_from_sec(end_s))
-            reference, _ = self._lookup_locked(observation, tracking, _time_from_sec(time_s))
-        start_t, start_q = start[:3], start[3:]
-        end_t, end_q = end[:3], end[3:]
-        ref_t, ref_q = reference[:3], reference[3:]
-        start_basis = math3d.matrix_from_quat(start_q)
-        delta = math3d.quat_from_matrix(
-            math3d.matrix_times(math3d.matrix_inverse(start_basis), math3d.matrix_from_quat(end_q))
-        )
-        w = delta[3]
-        s_squared = 1.0 - w * w
-        if s_squared < 10.0 * 2.220446049250313e-16:
-            axis: Vec3 = (1.0, 0.0, 0.0)
-        else:
-            s = math.sqrt(s_squared)
-            axis = (delta[0] / s, delta[1] / s, delta[2] / s)
-        angle = 2.0 * math.acos(max(-1.0, min(1.0, w)))
-        ox, oy, oz = math3d.matrix_apply(start_basis, axis)
-        scale = _c_divide(angle, corrected)  # tf2 divides by a zero interval too: NaN, inf
-        twist_rot = (ox * scale, oy * scale, oz * scale)
-        twist_vel = (
-            _c_divide(end_t[0] - start_t[0], corrected),
-            _c_divide(end_t[1] - start_t[1], corrected),
-            _c_divide(end_t[2] - start_t[2], corrected),
-        )
-        ref_basis = math3d.matrix_from_quat(ref_q)
-        out_rot = math3d.matrix_apply(ref_basis, twist_rot)
-        vx, vy, vz = math3d.matrix_apply(ref_basis, twist_vel)
-        px, py, pz = ref_t
-        cross = (
-            py * out_rot[2] - pz * out_rot[1],
-            pz * out_rot[0] - px * out_rot[2],
-            px * out_rot[1] - py * out_rot[0],
-        )
-        return (vx + cross[0], vy + cross[1], vz + cross[2]), out_rot
+            window = velocity_window(time_ns, averaging_ns, latest)
+            start, _ = self._lookup_locked(observation, tracking, window.start_ns)
+            end, _ = self._lookup_locked(observation, tracking, window.end_ns)
+            reference, _ = self._lookup_locked(observation, tracking, window.reference_ns)
+        return twist(start, end, reference, window.seconds)
 
     # ------------------------------------------------------------------ chain
 
