@@ -31,6 +31,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from tf_demo.core.lazy_import import lazy_module
+from tf_demo.core.math3d import canonical_quat_rows
 from tf_demo.core.math3d import quat_multiply
 from tf_demo.core.math3d import quat_multiply_batch
 from tf_demo.core.math3d import rotate_vector
@@ -401,8 +402,9 @@ def batch_walk_uniform(
 
     Applies when, along the path, no link changes parent and every lane's time is strictly
     inside every dynamic link's history (so no lane can fail): the links are found once and
-    each is read for all lanes at once.  Returns raw ``target_T_source`` ``(N, 3)`` and
-    ``(N, 4)``, equal to :func:`batch_walk`'s; None means "use :func:`batch_walk`".
+    each is read for all lanes at once.  Returns ``target_T_source`` ``(N, 3)`` and ``(N, 4)``
+    with the rotation canonical as :meth:`BufferCore.lookup_transform` gives it (made per pass,
+    on contiguous components); None means "use :func:`batch_walk`".
     """
     count = times.shape[0]
     if not count:
@@ -448,9 +450,15 @@ def batch_walk_uniform(
             result = _chain_product(source_links, chunk)
         for column in range(3):
             translations[begin:end, column] = result[column]
-        for column in range(4):
-            rotations[begin:end, column] = result[3 + column]
+        canonical = canonical_quat_rows(*_full_rows(result[3:], end - begin))
+        for column, values in enumerate(canonical):
+            rotations[begin:end, column] = values
     return translations, rotations
+
+
+def _full_rows(values: Sequence[Value], count: int) -> list[FloatArray]:
+    """Return the values as arrays of ``count`` lanes (a float stands for every lane)."""
+    return [np.full(count, value) if isinstance(value, float) else value for value in values]
 
 
 def batch_walk(

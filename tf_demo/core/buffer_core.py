@@ -686,7 +686,7 @@ class BufferCore(FrameTree):
                     common_time_failed = True
             uniform = batch_walk_uniform(self._caches, target_id, source_id, resolved)
             if uniform is not None:
-                return uniform[0], math3d.canonical_quat_batch(uniform[1], out=uniform[1])
+                return uniform
             translations = np.empty((count, 3))
             rotations = np.empty((count, 4))
             # Chunks keep every temporary small (in cache, and reused by the allocator

@@ -45,8 +45,9 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
+    FloatArray = npt.NDArray[np.float64]
     #: One component for many lanes at once (an array), or the same float for every lane.
-    Lane = float | npt.NDArray[np.float64]
+    Lane = float | FloatArray
 else:
     np = lazy_module('numpy')
 
@@ -72,6 +73,7 @@ __all__ = [
     'Vec3',
     'canonical_quat',
     'canonical_quat_batch',
+    'canonical_quat_rows',
     'compose',
     'compose_batch',
     'homogeneous_from_transform',
@@ -561,16 +563,15 @@ def quat_from_matrix_batch(m: npt.NDArray[np.float64]) -> npt.NDArray[np.float64
     return out
 
 
-def canonical_quat_batch(
-    q: npt.NDArray[np.float64], out: npt.NDArray[np.float64] | None = None
-) -> npt.NDArray[np.float64]:
+def canonical_quat_rows(
+    x: FloatArray, y: FloatArray, z: FloatArray, w: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
     """
-    Row-wise :func:`canonical_quat`, bit for bit, with the same arithmetic.
+    Element-wise :func:`canonical_quat` of four component arrays, bit for bit.
 
-    :param out: ``(N, 4)`` array to write into (may be ``q`` itself); a new C-contiguous one
-        by default.
+    The same arithmetic as the scalar function, on whole arrays; contiguous components (and
+    arrays that fit in cache) make it several times faster than on an ``(N, 4)`` array's columns.
     """
-    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
     with np.errstate(divide='ignore', invalid='ignore'):
         s = 2.0 / (x * x + y * y + z * z + w * w)
         xs, ys, zs = x * s, y * s, z * s
@@ -580,15 +581,30 @@ def canonical_quat_batch(
         xy, xz, yz = x * ys, x * zs, y * zs
         root = np.sqrt(trace + 1.0)
         half_inverse = 0.5 / root
-        result = np.empty((q.shape[0], 4))
-        result[:, 0] = ((yz + wx) - (yz - wx)) * half_inverse
-        result[:, 1] = ((xz + wy) - (xz - wy)) * half_inverse
-        result[:, 2] = ((xy + wz) - (xy - wz)) * half_inverse
-        result[:, 3] = root * 0.5
+        qx = ((yz + wx) - (yz - wx)) * half_inverse
+        qy = ((xz + wy) - (xz - wy)) * half_inverse
+        qz = ((xy + wz) - (xy - wz)) * half_inverse
+        qw = root * 0.5
     rows = np.flatnonzero(~(trace > 0.0))
-    if rows.size:
-        result[rows] = quat_from_matrix_batch(matrix_from_quat_batch(q[rows]))
-    if out is None:
-        return result
-    out[...] = result
-    return out
+    if rows.size:  # the full matrix round trip, as the scalar function's other branch
+        full = quat_from_matrix_batch(
+            matrix_from_quat_batch(np.stack((x[rows], y[rows], z[rows], w[rows]), axis=1))
+        )
+        qx[rows], qy[rows], qz[rows], qw[rows] = full.T
+    return qx, qy, qz, qw
+
+
+def canonical_quat_batch(
+    q: npt.NDArray[np.float64], out: npt.NDArray[np.float64] | None = None
+) -> npt.NDArray[np.float64]:
+    """
+    Row-wise :func:`canonical_quat`, bit for bit (:func:`canonical_quat_rows` on the columns).
+
+    :param out: ``(N, 4)`` array to write into (may be ``q`` itself); a new C-contiguous one
+        by default.
+    """
+    components = canonical_quat_rows(q[:, 0], q[:, 1], q[:, 2], q[:, 3])
+    result = np.empty((q.shape[0], 4)) if out is None else out
+    for column, values in enumerate(components):
+        result[:, column] = values
+    return result
