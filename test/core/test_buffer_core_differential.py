@@ -66,6 +66,7 @@ from tf_demo.core import TransformException
 from tf_demo.core.exceptions import BackwardExtrapolationException
 from tf_demo.core.exceptions import ForwardExtrapolationException
 from tf_demo.core.exceptions import NoDataForExtrapolationException
+from tf_demo.core.velocity import velocity_window
 from tf_demo.testing import strategies
 
 pytestmark = pytest.mark.differential
@@ -210,7 +211,7 @@ def _run_op(core: BufferCore, op: list[Any]) -> Result | None:
             return {'ok': not text, 'msg': text}
         elif kind == 'velocity':
             linear, angular = core.lookup_velocity(op[1], op[2], op[3], op[4])
-            return {'linear': list(linear), 'angular': list(angular)}
+            return {'linear': list(linear), 'angular': list(angular), **_conditioning(core, op)}
         elif kind == 'lct':
             return {'stamp': core.get_latest_common_time(op[1], op[2])}
         elif kind == 'chain':
@@ -344,13 +345,46 @@ def _close(a: list[float], b: list[float]) -> bool:
     )
 
 
-def _close_relative(a: list[float], b: list[float]) -> bool:
+def _conditioning(core: BufferCore, op: list[Any]) -> Result:
     """
-    Tell whether two velocities agree: finite differences over a short interval scale the
-    rounding of the two lookups they difference, so to 1e-9 relative (1e-9 absolute near 0).
+    What bounds the rounding in a velocity query (ours only, not compared): the window's length
+    in seconds and the reference origin's distance (the lever arm of the angular velocity).
     """
+    _, tracking, observation, time_ns, averaging_ns = op
+    try:
+        latest = core.get_latest_common_time(observation, tracking)
+    except TransformException:
+        latest = 0
+    window = velocity_window(time_ns, averaging_ns, latest)
+    reference = core.lookup_transform(observation, tracking, window.reference_ns)
+    reach = math.dist((0.0, 0.0, 0.0), reference.translation)
+    return {'window_s': window.seconds, 'reach': reach}
+
+
+def _velocity_tolerances(ours: Result) -> tuple[float, float]:
+    """
+    Return the (linear, angular) tolerance of a velocity: tf2's own rounding over the window.
+
+    A velocity differences two lookups (each right to ~1e-15 of its size) and takes the angle
+    between their rotations with ``acos`` of a cosine; when they barely turn, that cosine is an
+    ulp or two below 1 and the angle is ~1e-8 of noise in tf2 as in ours. Both are divided by
+    the window (tf2's is 1e-5 s long for static links) and the angle reaches the linear
+    velocity through the reference origin's lever arm.
+    """
+    seconds = abs(ours['window_s'])
+    if not seconds or not math.isfinite(seconds):
+        return TOLERANCE, TOLERANCE
+    lever = 1.0 + ours['reach']
+    turn = math.dist((0.0, 0.0, 0.0), ours['angular']) * seconds
+    angle_noise = 1e-7 if not turn > 1e-6 else 1e-12
+    angular = TOLERANCE + angle_noise / seconds
+    return TOLERANCE + (1e-14 + angle_noise) * lever / seconds, angular
+
+
+def _close_relative(a: list[float], b: list[float], tolerance: float) -> bool:
+    """Tell whether two velocities agree to 1e-9 relative or ``tolerance`` (NaN equals NaN)."""
     return all(
-        math.isclose(x, y, rel_tol=1e-9, abs_tol=TOLERANCE) or (math.isnan(x) and math.isnan(y))
+        math.isclose(x, y, rel_tol=1e-9, abs_tol=tolerance) or (math.isnan(x) and math.isnan(y))
         for x, y in zip(a, b, strict=True)
     )
 
@@ -406,9 +440,9 @@ def compare(
             return f'expected can_transform message {theirs["msg"]!r}, got {ours["msg"]!r}'
         return None
     if kind == 'velocity':
-        for key in ('linear', 'angular'):
-            if not _close_relative(ours[key], theirs[key]):
-                return f'expected {key} velocity {theirs[key]}, got {ours[key]}'
+        for key, tolerance in zip(('linear', 'angular'), _velocity_tolerances(ours), strict=True):
+            if not _close_relative(ours[key], theirs[key], tolerance):
+                return f'expected {key} velocity {theirs[key]}, got {ours[key]} (+-{tolerance})'
         return None
     if kind == 'yaml' and ros1:
         return compare_yaml(ours['text'], theirs['text'])

@@ -74,7 +74,9 @@ def c_divide(numerator: float, denominator: float) -> float:
 def velocity_window(time_ns: int, averaging_ns: int, latest_ns: int) -> VelocityWindow:
     """Return tf2's window around ``time_ns``, clamped to the latest common time ``latest_ns``."""
     time_s = duration_to_sec(time_ns)
-    interval_s = duration_to_sec(averaging_ns)
+    # std::chrono::duration<double>(averaging_interval): nanoseconds divided by 1e9, where tf2's
+    # timeToSec (the times) scales whole seconds and nanoseconds apart.
+    interval_s = averaging_ns / 1e9
     end_s = min(time_s + interval_s * 0.5, duration_to_sec(latest_ns))
     start_s = max(0.00001 + interval_s, end_s) - interval_s
     return VelocityWindow(
