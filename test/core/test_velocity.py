@@ -65,6 +65,15 @@ def test_velocity_window_is_clamped_to_the_latest_common_time():
     assert static.seconds == pytest.approx(-1e-5)
 
 
+def test_the_averaging_interval_is_in_seconds_as_std_chrono_gives_it():
+    """
+    ns / 1e9, as ``std::chrono::duration<double>``; timeToSec's 1e-9 * ns would leave this
+    window 1.7e-21 s long where tf2's vanishes (and answers NaN: Jazzy's core, by the
+    differential test).
+    """
+    assert velocity_window(9_000, 2_000, S).seconds == 0.0
+
+
 def test_twist_of_a_translation_and_of_a_turn():
     """2 m along x in 0.5 s is 4 m/s; a quarter turn about z in 1 s is pi/2 rad/s about z."""
     still = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
