@@ -49,6 +49,7 @@ from tf_demo.core._batch import batch_walk_uniform
 from tf_demo.core.exceptions import TransformException
 from tf_demo.core.frame_tree import FrameTree
 from tf_demo.core.frame_tree import MAX_GRAPH_DEPTH
+from tf_demo.core.frame_tree import prune_shared_end
 from tf_demo.core.frames_format import all_frames_as_dot
 from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import all_frames_as_yaml
@@ -637,19 +638,11 @@ class BufferCore(FrameTree):
             source_chain = self._walk_chain(fixed_id, source_id, source_time_ns)
             if source_time_ns != target_time_ns:
                 target_chain = self._walk_chain(target_id, fixed_id, target_time_ns)
-                # tf2's pruning, to the letter: an empty source chain keeps nothing of the
-                # target's, and chains equal to their ends keep the target's first frame twice.
-                m = len(target_chain)
-                n = len(source_chain)
-                while m > 0 and n > 0:
-                    m -= 1
-                    n -= 1
-                    if source_chain[n] != target_chain[m]:
-                        break
-                if n > 0:
-                    del source_chain[n - 1 :]
-                if m < len(target_chain):
-                    source_chain.extend(target_chain[: m + 1])
+                # As Jazzy: an empty source chain keeps nothing of the target's, and chains
+                # equal to their ends keep the target's first frame twice.
+                stop = prune_shared_end(source_chain, target_chain)
+                if stop < len(target_chain):
+                    source_chain.extend(target_chain[: stop + 1])
             names = self._names
             return [names[frame_id] for frame_id in source_chain]
 

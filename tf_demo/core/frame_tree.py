@@ -63,6 +63,7 @@ __all__ = [
     'NO_PARENT',
     'Cache',
     'FrameTree',
+    'prune_shared_end',
 ]
 
 MAX_GRAPH_DEPTH = 1000
@@ -80,6 +81,27 @@ SIDE_NO_CACHE = 1
 SIDE_NO_DATA = 2
 SIDE_REACHED_OTHER = 3
 SIDE_LOOP = 4
+
+
+def prune_shared_end(chain: list[int], other: list[int]) -> int:
+    """
+    tf2's chain pruning: cut ``chain`` where its end stops matching ``other``'s end.
+
+    ``chain`` loses its frames from one before the first difference (compared from the ends);
+    the return value is where the comparison stopped in ``other``.  To the letter of
+    ``walkToTopParent`` and ``_chainAsVector`` (quirks included): the caller then appends
+    ``other[: stop + 1]`` (reversed in the walk) when ``stop < len(other)``.
+    """
+    m = len(other)
+    n = len(chain)
+    while m > 0 and n > 0:
+        m -= 1
+        n -= 1
+        if chain[n] != other[m]:
+            break
+    if n > 0:
+        del chain[n - 1 :]
+    return m
 
 
 def _links(caches: list[Cache | None], frames: list[int]) -> list[Cache]:
@@ -410,15 +432,7 @@ class FrameTree:
         outcome, _, _ = self._climb(target_id, top, source_id, time_ns, reverse)
         if outcome == SIDE_REACHED_OTHER:
             return reverse
-        m = len(reverse)
-        n = len(chain)
-        while m > 0 and n > 0:
-            m -= 1
-            n -= 1
-            if chain[n] != reverse[m]:
-                break
-        if n > 0:
-            del chain[n - 1 :]
-        if m < len(reverse):
-            chain.extend(reversed(reverse[: m + 1]))
+        stop = prune_shared_end(chain, reverse)
+        if stop < len(reverse):
+            chain.extend(reversed(reverse[: stop + 1]))
         return chain
