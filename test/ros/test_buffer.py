@@ -143,6 +143,28 @@ def test_backward_time_jump_clears_dynamic_keeps_static() -> None:
     assert buffer.can_transform('a', 's', 0)
 
 
+def test_the_jump_warning_is_on_tf2_buffer_even_with_a_node(
+    world_env: dict[str, str], capfd: pytest.CaptureFixture[str]
+) -> None:
+    """tf2_ros logs the clearing on the logger ``tf2_buffer``, not on the buffer's node."""
+    del world_env
+    from tf_demo import transport
+
+    transport.init(args=['test'])
+    try:
+        node = transport.create_node('jumpy')
+        clock = sim_clock(100.0)
+        buffer = Buffer(node=node, clock=clock)
+        clock.set_ros_time_override(Time(seconds=95.0))
+        node.destroy_node()
+    finally:
+        transport.try_shutdown()
+    del buffer
+    err = capfd.readouterr().err
+    assert '[tf2_buffer]: Detected jump back in time. Clearing tf buffer.' in err
+    assert '[jumpy]: Detected jump' not in err
+
+
 def upstream_buffer() -> Buffer:
     """Upstream test_tf2_geometry_msgs setup: a -> b is t=(1,0,0), x-flip, at 2 s."""
     buffer = Buffer()

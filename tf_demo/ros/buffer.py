@@ -375,7 +375,8 @@ class Buffer:
         if change in ('ROS_TIME_ACTIVATED', 'ROS_TIME_DEACTIVATED') or (
             time_jump.delta.nanoseconds <= -JUMP_BACK_CLEAR_THRESHOLD_NS
         ):
-            self._logger().warning('Detected jump back in time. Clearing tf buffer.')
+            # Always on tf2_buffer, node or not, as tf2_ros's time_jump_callback logs it.
+            get_logger('tf2_buffer').warning('Detected jump back in time. Clearing tf buffer.')
             self.clear()
         self._waits.wake()
 

@@ -31,6 +31,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 import math
 import os
+import random
 from typing import Any
 from typing import Protocol
 from typing import TypedDict
@@ -169,6 +170,18 @@ class Chooser(Protocol):
     def real(self, low: float, high: float) -> float:
         """Return a finite float in ``[low, high]``."""
         ...
+
+
+class SeededChooser(random.Random):
+    """A seeded :class:`Chooser` for bulk runs: ``SeededChooser(seed)`` (the same every run)."""
+
+    def integer(self, low: int, high: int) -> int:
+        """Return an integer in ``[low, high]``."""
+        return self.randint(low, high)
+
+    def real(self, low: float, high: float) -> float:
+        """Return a float in ``[low, high]``."""
+        return self.uniform(low, high)
 
 
 class HypothesisChooser:
