@@ -32,6 +32,7 @@ from collections.abc import Sequence
 import math
 import os
 import random
+import sys
 from typing import Any
 from typing import Protocol
 from typing import TypedDict
@@ -257,7 +258,10 @@ def _quaternion(choose: Chooser, special_set: int = 0) -> Quat:
             choose.real(-1.0, 1.0),
         )
         if _norm_is_usable(q):
-            unit = _normalised(q)
+            # A subnormal component keeps its sign in ROS 1's store and loses it in Jazzy's
+            # matrix route: next to a rotation at a right angle, that sign picks the arc.
+            x, y, z, w = (c if abs(c) >= sys.float_info.min else 0.0 for c in _normalised(q))
+            unit = (x, y, z, w)
             stored = math3d.canonical_quat(unit)
             if sum(a * b for a, b in zip(unit, stored, strict=True)) < 0:
                 return (-unit[0], -unit[1], -unit[2], -unit[3])
