@@ -41,25 +41,10 @@ TOLERANCE = 1e-9
 Answer = tuple[Any, ...] | None
 
 
-def _message(op: list[Any]) -> Any:
-    """Build the rclpy ``TransformStamped`` of a ``set`` operation."""
-    from geometry_msgs.msg import TransformStamped
-
-    _, parent, child, stamp_ns, translation, rotation, _, _ = op
-    msg = TransformStamped()
-    msg.header.frame_id = parent
-    msg.child_frame_id = child
-    msg.header.stamp.sec, msg.header.stamp.nanosec = divmod(stamp_ns, 1_000_000_000)
-    t = msg.transform.translation
-    t.x, t.y, t.z = translation
-    q = msg.transform.rotation
-    q.x, q.y, q.z, q.w = rotation
-    return msg
-
-
 def _ask(buffer: Any, op: list[Any]) -> Answer:
     """Apply one operation through the buffer's public API; encode what it answers."""
     from rclpy.time import Time
+    from tf_demo.nodes.helpers import make_transform_stamped
 
     kind = op[0]
 
@@ -69,7 +54,7 @@ def _ask(buffer: Any, op: list[Any]) -> Answer:
     try:
         if kind == 'set':
             insert = buffer.set_transform_static if op[7] else buffer.set_transform
-            insert(_message(op), op[6])
+            insert(make_transform_stamped(*op[1:6]), op[6])
             return None
         if kind == 'clear':
             buffer.clear()

@@ -110,6 +110,8 @@ _acos = math.acos
 _sin = math.sin
 _cos = math.cos
 _VALUES = Struct('7d')
+#: :meth:`TimeCache.interval_at` of an interval across a parent change (no interpolation).
+_PARENT_CHANGE: Interval = (-1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 #: ``pack_values(tx, ty, tz, qx, qy, qz, qw)``: one sample's seven doubles, as a cache stores them.
 pack_values = _VALUES.pack
 #: The inverse of :data:`pack_values`.
@@ -369,7 +371,7 @@ class TimeCache:
         tx0, ty0, tz0, px, py, pz, pw, parent = self.sample_at(index)
         tx1, ty1, tz1, x1, y1, z1, w1, parent1 = self.sample_at(index + 1)
         if parent1 != parent:
-            interval = (-1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+            interval = _PARENT_CHANGE
         else:
             dot = px * x1 + py * y1 + pz * z1 + pw * w1
             magnitude = -dot if dot < 0 else dot

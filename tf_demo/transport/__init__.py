@@ -331,7 +331,7 @@ def _run_installed(
     except KeyboardInterrupt:
         pass
     except Exception as error:
-        if not (stop.explains(error) or not ok()):
+        if ok() and not stop.explains(error):
             raise
     finally:
         _finish(executor, node)
