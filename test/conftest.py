@@ -40,6 +40,7 @@ from typing import TypeVar
 
 from hypothesis import settings
 import pytest
+import tf_demo
 from tf_demo.testing import strategies  # noqa: F401  (registers the 'ci' and 'nightly' profiles)
 from tf_demo.transport.backend import backend_name
 from tf_demo.transport.backend import BackendError
@@ -48,6 +49,9 @@ if TYPE_CHECKING:
     from tf_demo.transport.dds.participant import DdsParticipant
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
+#: Where the tf_demo under test is imported from: this checkout (an editable install), or an
+#: installed package (the ROS world's colcon test); child processes import the same one.
+PACKAGE_ROOT = Path(tf_demo.__file__).resolve().parent.parent
 #: Where tests save what a person should look at (screenshots, plots): ``$TF_DEMO_ARTIFACTS``.
 ARTIFACTS = Path(os.environ.get('TF_DEMO_ARTIFACTS', REPO_ROOT / 'test-artifacts'))
 
@@ -181,7 +185,7 @@ def world_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
                 'TF_DEMO_BACKEND': WORLD,
                 'PYTHONUNBUFFERED': '1',
                 'PYTHONPATH': os.pathsep.join(
-                    p for p in (str(REPO_ROOT), os.environ.get('PYTHONPATH', '')) if p
+                    p for p in (str(PACKAGE_ROOT), os.environ.get('PYTHONPATH', '')) if p
                 ),
             }
         )

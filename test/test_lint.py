@@ -276,6 +276,7 @@ _GENERATED_MESSAGES = (
 _WORLD_FACADES = ('callback_groups', 'clock', 'executors', 'logging', 'node', 'parameters')
 #: The modules that have no test file named after them, and where they are tested instead.
 TESTED_ELSEWHERE = {
+    'tf_demo/__main__.py': '`python -m tf_demo`: test/test_build_info.py runs it',
     **{
         f'tf_demo/msgs/{name}.py': 'generated from the schema table: test/msgs/test_typegen.py '
         "checks it is the generator's output, test/msgs/test_message.py its classes"

@@ -5,13 +5,16 @@
 #   bash tools/setup.sh test             the whole test suite, in both worlds
 #
 # It installs what it needs itself: Debian packages (apt), a virtual environment in .venv and the
-# pip packages (this package with its [dds,test] extras). Exit status is the job's.
+# pip packages (this package with its [dds,test] extras). Exit status is the job's. The install
+# compiles the hot modules with mypyc (TF_DEMO_INTERPRETED=1 runs them from their sources).
 #
-# The test job runs the standalone suite (pytest in .venv, no ROS), then, where ROS 2 Jazzy is
+# The test job runs the standalone suite (pytest in .venv, no ROS) on the compiled build, then
+# the core's and the codec's tests on the interpreted build; then, where ROS 2 Jazzy is
 # installed (/opt/ros/jazzy/setup.bash), the ROS-world suite: colcon build + colcon test in an
-# overlay workspace on that Jazzy, with a virtual environment of the system Python that sees
-# Jazzy's rclpy (.venv-jazzy, --system-site-packages) and has no cyclonedds Python package.
-# A failure in either world fails the run; each world's pytest summary line is printed.
+# overlay workspace on that Jazzy (compiled too), with a virtual environment of the system Python
+# that sees Jazzy's rclpy (.venv-jazzy, --system-site-packages) and has no cyclonedds Python
+# package, and again the core's and the codec's tests interpreted. A failure anywhere fails the
+# run; every pytest summary line is printed.
 set -euo pipefail
 
 job="${1:-}"
@@ -59,9 +62,10 @@ if [ ! -x "$venv/bin/python" ]; then
   echo "== python3 -m venv .venv"
   python3 -m venv "$venv"
 fi
-echo "== pip install -e .[dds,test,view,bag] colcon-common-extensions"
+echo "== pip install -e .[dds,test,view,bag] colcon-common-extensions (mypyc compiles the hot modules)"
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" --upgrade pip
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" -e ".[dds,test,view,bag]" colcon-common-extensions
+echo "== $("$venv/bin/python" -m tf_demo)"
 
 if [ "$job" = demo ]; then
   export PATH="$venv/bin:$PATH"
@@ -92,6 +96,19 @@ standalone_summary="$(summary_line "$logs/standalone.log")"
 # pytest exits 5 when it collects nothing: that is a failure here.
 if [ -z "$standalone_summary" ] || [ "$standalone_status" = 5 ]; then
   standalone_status=1
+fi
+
+# The same core and codec tests (differential tests included) on the interpreted build.
+interpreted_tests=(test/core test/msgs)
+echo "== standalone world, interpreted build: pytest ${interpreted_tests[*]} (TF_DEMO_INTERPRETED=1)"
+interpreted_status=0
+env -u PYTHONPATH -u AMENT_PREFIX_PATH -u RMW_IMPLEMENTATION -u ROS_DISTRO \
+  PATH="$venv/bin:$PATH" VIRTUAL_ENV="$venv" TF_DEMO_BACKEND=dds TF_DEMO_INTERPRETED=1 \
+  "$venv/bin/python" -m pytest "${interpreted_tests[@]}" -p no:cacheprovider 2>&1 \
+  | tee "$logs/interpreted.log" || interpreted_status=$?
+interpreted_summary="$(summary_line "$logs/interpreted.log")"
+if [ -z "$interpreted_summary" ] || [ "$interpreted_status" = 5 ]; then
+  interpreted_status=1
 fi
 
 # -- the ROS world: colcon build + colcon test in an overlay on ROS 2 Jazzy ---------------------
@@ -129,14 +146,19 @@ if [ -f "$jazzy_setup" ]; then
     cd "$ws"
     rm -rf build/tf_demo install/tf_demo
     # colcon through the venv's Python (ROS 2's advice for venvs): the executables' shebang is
-    # then that Python, which sees the pip-only dependencies.
+    # then that Python, which sees the pip-only dependencies (mypy among them: setup.py compiles).
     python -m colcon build --base-paths "$here" --packages-select tf_demo \
       --event-handlers console_cohesion- >"$logs/ros_build.log" 2>&1 \
       || { cat "$logs/ros_build.log"; exit 1; }
+    grep -E '^tf_demo: ' "$logs/ros_build.log" || true
     set +u
     # shellcheck disable=SC1091
     source install/setup.bash
     set -u
+    # The tests import the installed (compiled) package: colcon runs `python -m pytest` in the
+    # source folder, whose tf_demo/ would otherwise come first on sys.path.
+    export PYTHONSAFEPATH=1
+    (cd / && echo "== $(python -m tf_demo)")
     status=0
     python -m colcon test --base-paths "$here" --packages-select tf_demo \
       --return-code-on-test-failure \
@@ -148,12 +170,33 @@ if [ -f "$jazzy_setup" ]; then
   if [ -z "$ros_summary" ] || grep -qE '^Summary: 0 tests' "$logs/ros.log"; then
     ros_status=1
   fi
+  echo "== ROS world, interpreted build: pytest ${interpreted_tests[*]} (TF_DEMO_INTERPRETED=1)"
+  ros_interpreted_status=0
+  (
+    set +u
+    # shellcheck disable=SC1090
+    source "$jazzy_setup"
+    # shellcheck disable=SC1091
+    source "$ws/install/setup.bash"
+    set -u
+    export PATH="$jazzy_venv/bin:$PATH" VIRTUAL_ENV="$jazzy_venv" PYTHONSAFEPATH=1
+    export RMW_IMPLEMENTATION="${RMW_IMPLEMENTATION:-rmw_cyclonedds_cpp}"
+    export TF_DEMO_INTERPRETED=1
+    unset TF_DEMO_BACKEND
+    python -m pytest "${interpreted_tests[@]}" -p no:cacheprovider
+  ) 2>&1 | tee "$logs/ros_interpreted.log" || ros_interpreted_status=$?
+  ros_interpreted_summary="$(summary_line "$logs/ros_interpreted.log")"
+  if [ -z "$ros_interpreted_summary" ] || [ "$ros_interpreted_status" = 5 ]; then
+    ros_interpreted_status=1
+  fi
 fi
 
 echo
 echo "== standalone world: ${standalone_summary:-no pytest summary (the suite did not run)}"
+echo "== standalone world, interpreted (${interpreted_tests[*]}): ${interpreted_summary:-no pytest summary}"
 if [ -f "$jazzy_setup" ]; then
   echo "== ROS world (rclpy, $(dirname "$jazzy_setup")): ${ros_summary:-no pytest summary}"
+  echo "== ROS world, interpreted (${interpreted_tests[*]}): ${ros_interpreted_summary:-no pytest summary}"
 else
   echo "== ROS world: not run ($jazzy_setup not found; install ROS 2 Jazzy to run it)"
 fi
@@ -162,8 +205,16 @@ if [ "$standalone_status" != 0 ]; then
   echo "standalone suite failed (exit $standalone_status)" >&2
   status=1
 fi
+if [ "$interpreted_status" != 0 ]; then
+  echo "standalone interpreted run failed (exit $interpreted_status)" >&2
+  status=1
+fi
 if [ "$ros_status" != 0 ]; then
   echo "ROS-world suite failed (exit $ros_status)" >&2
+  status=1
+fi
+if [ "${ros_interpreted_status:-0}" != 0 ]; then
+  echo "ROS-world interpreted run failed (exit $ros_interpreted_status)" >&2
   status=1
 fi
 exit "$status"

@@ -15,8 +15,8 @@
 """
 Tests of tf_demo/core/links.py: a list of links at one time, and the three shapes of route.
 
-The inlined interpolation and composition are pinned to math3d in test_math3d_inlined.py; here:
-which sample each time reads, None where a link has no data, and how routes combine sides.
+The walk composes with math3d's functions (tested in test_math3d.py); here: which sample each
+time reads, None where a link has no data, and how routes combine sides.
 """
 
 from __future__ import annotations

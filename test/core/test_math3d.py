@@ -100,9 +100,9 @@ def test_slerp_matches_tf2_short_path_value():
 
 
 def test_slerp_equal_inputs_return_first_unchanged():
-    """A zero angle returns q0 itself, with no renormalisation."""
+    """A zero angle returns q0 unchanged, with no renormalisation."""
     q = (0.0, 0.0, 0.0, 2.0)
-    assert m3.slerp(q, q, 0.3) is q
+    assert m3.slerp(q, q, 0.3) == q
 
 
 def test_slerp_endpoints():

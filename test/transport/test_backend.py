@@ -19,7 +19,7 @@ from pathlib import Path
 import subprocess
 import sys
 
-from conftest import REPO_ROOT
+from conftest import PACKAGE_ROOT
 from conftest import run_captured
 import pytest
 from tf_demo.transport.backend import BackendError
@@ -40,7 +40,7 @@ def run_probe(
     env.pop('TF_DEMO_BACKEND', None)
     if backend is not None:
         env['TF_DEMO_BACKEND'] = backend
-    paths = [str(REPO_ROOT)] + ([str(extra_path)] if extra_path else [])
+    paths = [str(PACKAGE_ROOT)] + ([str(extra_path)] if extra_path else [])
     env['PYTHONPATH'] = os.pathsep.join(paths)
     return run_captured([sys.executable, '-c', code], env)
 

@@ -57,6 +57,7 @@ import time
 from typing import Any
 
 from conftest import HAVE_CYCLONEDDS
+from conftest import PACKAGE_ROOT
 from conftest import run_captured
 from conftest import STANDALONE_ONLY
 from conftest import WORLD
@@ -1326,7 +1327,7 @@ def test_a_stop_signal_while_the_node_starts_ends_cleanly(
     script = tmp_path / 'slow.py'
     text = STOPPED_WHILE_STARTING.replace('{signal_name}', signal_name)
     script.write_text(text.replace('{before}', str(before)), 'utf-8')
-    python_path = os.pathsep.join([str(REPO_ROOT), world_env.get('PYTHONPATH', '')])
+    python_path = os.pathsep.join([str(PACKAGE_ROOT), world_env.get('PYTHONPATH', '')])
     completed = run_captured(
         [sys.executable, str(script)], {**world_env, 'PYTHONPATH': python_path}
     )

@@ -18,6 +18,7 @@ import os
 from pathlib import Path
 import sys
 
+from conftest import PACKAGE_ROOT
 from conftest import run_captured
 import pytest
 from tf_demo.transport.ros_args import expand_topic_name
@@ -25,8 +26,6 @@ from tf_demo.transport.ros_args import parse_ros_args
 from tf_demo.transport.ros_args import remove_ros_args
 from tf_demo.transport.ros_args import RosArgsError
 from tf_demo.transport.ros_args import split_ros_args
-
-REPO_ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_user_arguments_outside_ros_args_are_kept_in_order() -> None:
@@ -166,7 +165,7 @@ def test_executable_with_bad_arguments_exits_1_with_usage(
     """A real process prints usage and a one-line error, exits 1, and shows no traceback."""
     script = tmp_path / 'node.py'
     script.write_text(NODE_SCRIPT, encoding='utf-8')
-    env = dict(os.environ, PYTHONPATH=str(REPO_ROOT), TF_DEMO_BACKEND='dds')
+    env = dict(os.environ, PYTHONPATH=str(PACKAGE_ROOT), TF_DEMO_BACKEND='dds')
     completed = run_captured([sys.executable, str(script), '--ros-args', *ros_args], env)
     assert completed.returncode == 1
     lines = completed.stderr.strip().splitlines()

@@ -29,11 +29,11 @@ import re
 import subprocess
 import sys
 
+from conftest import PACKAGE_ROOT
 import pytest
 
 pytestmark = [pytest.mark.rclpy_world, pytest.mark.timeout(240)]
 
-REPO_ROOT = Path(__file__).resolve().parents[2]
 SHIMS = Path(__file__).resolve().parent / 'shims'
 UPSTREAM_TESTS = (
     'tf2_ros_py/test/test_buffer.py',
@@ -53,7 +53,7 @@ def geometry2_sources() -> Path | None:
 
 
 def shimmed_env(env: dict[str, str]) -> dict[str, str]:
-    paths = [str(SHIMS), str(REPO_ROOT), env.get('PYTHONPATH', '')]
+    paths = [str(SHIMS), str(PACKAGE_ROOT), env.get('PYTHONPATH', '')]
     return dict(
         env, PYTHONPATH=os.pathsep.join(p for p in paths if p), PYTHONDONTWRITEBYTECODE='1'
     )

@@ -39,6 +39,7 @@ import threading
 from typing import Protocol
 from typing import TYPE_CHECKING
 
+from tf_demo.build_info import version_line
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._doctor import diagnose
 from tf_demo.cli._doctor_report import exit_code
@@ -83,6 +84,12 @@ def build_parser() -> argparse.ArgumentParser:
         '--bag', metavar='PATH', help='diagnose a rosbag2 recording instead (timing checks too)'
     )
     parser.add_argument('--json', action='store_true', help='print one JSON object')
+    parser.add_argument(
+        '--version',
+        action='version',
+        version=version_line(),
+        help="print tf_demo's version and build (compiled or interpreted), then exit",
+    )
     return parser
 
 

@@ -22,21 +22,22 @@ as :class:`~tf_demo.core.time_cache.TimeCache`, so results equal the scalar walk
 fail are only flagged: the caller replays them through the scalar walk, which raises tf2's exact
 exception.  Quaternion products and the full-path steps call :mod:`~tf_demo.core.math3d` on
 lanes; the lane-wise lerp, slerp and the walk's translation step are vectorised copies of
-math3d's, pinned to it (within 1e-12) by ``test/core/test_math3d_inlined.py``.
+math3d's, pinned to it (within 1e-12) by ``test/core/test_math3d_vectorised.py``.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import NamedTuple
 from typing import TYPE_CHECKING
 
 from tf_demo.core.lazy_import import lazy_module
+from tf_demo.core.math3d import canonical_quat_batch
 from tf_demo.core.math3d import canonical_quat_rows
-from tf_demo.core.math3d import quat_multiply
 from tf_demo.core.math3d import quat_multiply_batch
-from tf_demo.core.math3d import rotate_vector
+from tf_demo.core.math3d import quat_multiply_lanes
 from tf_demo.core.math3d import rotate_vector_batch
-from tf_demo.core.time_cache import CacheArrays
+from tf_demo.core.math3d import rotate_vector_lanes
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
 
@@ -54,7 +55,91 @@ if TYPE_CHECKING:
 else:
     np = lazy_module('numpy')
 
-__all__ = ['batch_walk', 'batch_walk_uniform', 'sample_batch']
+__all__ = [
+    'INTERVAL_COLUMNS',
+    'CacheArrays',
+    'batch_walk',
+    'batch_walk_uniform',
+    'cache_arrays',
+    'sample_batch',
+]
+
+#: Rows of :attr:`CacheArrays.intervals`, one column per interval between samples k and k + 1:
+#: older translation (3), newer minus older translation (3), older rotation (4), newer rotation
+#: with the slerp sign applied (4), slerp angle, ``1 / sin(angle)`` (0 for a zero angle), the
+#: interval length in ns as a float, ``cos(angle) / sin(angle)`` (0 for a zero angle), and
+#: ``newer / sin(angle) - older * cot(angle)`` (4; the sine coefficient of the slerp).
+INTERVAL_COLUMNS = 22
+
+
+class CacheArrays(NamedTuple):
+    """A :class:`TimeCache`'s live samples as numpy arrays, with per-interval constants."""
+
+    #: ``(K,)`` ascending stamps.
+    stamps: npt.NDArray[np.int64]
+    #: ``(7, K)``: one contiguous row per component (tx, ty, tz, qx, qy, qz, qw).
+    values: npt.NDArray[np.float64]
+    #: ``(K,)`` parent ids.
+    parents: npt.NDArray[np.int64]
+    #: ``(INTERVAL_COLUMNS, K - 1)`` lerp / slerp constants, one contiguous row each.
+    intervals: npt.NDArray[np.float64]
+    #: Some interval has a zero slerp angle (its rotation is the older one, as tf2).
+    any_still: bool
+    #: Some interval changes parent (no interpolation across it).
+    any_parent_change: bool
+    #: Largest slerp angle of any interval (0 when there is none).
+    max_theta: float
+
+
+def cache_arrays(cache: TimeCache) -> CacheArrays:
+    """
+    Return a time cache's live samples as :class:`CacheArrays`, ascending by stamp.
+
+    Kept in the cache's ``arrays_memo`` until its next change (insert, prune, clear); treat them
+    as read-only.  Samples the cache made already keep their bits.  The interval constants are
+    the batch walk's slerp, pinned to :func:`math3d.slerp <tf_demo.core.math3d.slerp>` by
+    ``test/core/test_math3d_vectorised.py``.
+    """
+    memo = cache.arrays_memo
+    if isinstance(memo, CacheArrays):
+        return memo
+    stamp_array, value_array, parent_array, samples = cache.live_storage()
+    stamps = np.array(stamp_array, dtype=np.int64)
+    table = np.array(value_array, dtype=np.float64).reshape(-1, 7)
+    canonical_quat_batch(table[:, 3:], out=table[:, 3:])
+    for row, sample in enumerate(samples):
+        if sample is not None:  # stored as given (insert), or read already: the same bits
+            table[row] = sample[:7]
+    values = np.ascontiguousarray(table.T)
+    parents = np.array(parent_array, dtype=np.int64)
+    count = stamps.shape[0]
+    intervals = np.empty((INTERVAL_COLUMNS, max(count - 1, 0)))
+    q0 = values[3:, :-1]
+    q1 = values[3:, 1:]
+    dot = np.einsum('ij,ij->j', q0, q1)
+    theta = np.arccos(np.minimum(np.abs(dot), 1.0))
+    intervals[0:3] = values[:3, :-1]
+    intervals[3:6] = values[:3, 1:] - values[:3, :-1]
+    intervals[6:10] = q0
+    intervals[10:14] = q1 * np.where(dot < 0, -1.0, 1.0)
+    intervals[14] = theta
+    with np.errstate(divide='ignore'):
+        intervals[15] = np.where(theta != 0.0, 1.0 / np.sin(theta), 0.0)
+    intervals[16] = np.diff(stamps).astype(np.float64)
+    intervals[17] = np.cos(theta) * intervals[15]
+    intervals[18:22] = intervals[10:14] * intervals[15] - q0 * intervals[17]
+    arrays = CacheArrays(
+        stamps,
+        values,
+        parents,
+        intervals,
+        bool((theta == 0.0).any()),
+        bool((parents[1:] != parents[:-1]).any()),
+        float(theta.max()) if theta.size else 0.0,
+    )
+    cache.arrays_memo = arrays
+    return arrays
+
 
 _MAX_GRAPH_DEPTH = 1000
 _ENDING_NONE = 0
@@ -207,7 +292,7 @@ def sample_batch(
             np.array([sample[7]], dtype=np.int64),
             None,
         )
-    arrays = cache.arrays()
+    arrays = cache_arrays(cache)
     stamps = arrays.stamps
     columns = arrays.values
     parent_ids = arrays.parents
@@ -283,7 +368,7 @@ def _compose(link: Link, acc: Link) -> Link:
     x, y, z = _compose_translation(link, acc)
     _, _, _, px, py, pz, pw = link
     _, _, _, qx, qy, qz, qw = acc
-    rx, ry, rz, rw = quat_multiply((px, py, pz, pw), (qx, qy, qz, qw))
+    rx, ry, rz, rw = quat_multiply_lanes((px, py, pz, pw), (qx, qy, qz, qw))
     return (x, y, z, rx, ry, rz, rw)
 
 
@@ -296,7 +381,7 @@ def _uniform_parent(cache: TimeCache | StaticCache, earliest: int, latest: int) 
     """
     if isinstance(cache, StaticCache):
         return cache.get_parent(0)
-    arrays = cache.arrays()
+    arrays = cache_arrays(cache)
     stamps = arrays.stamps
     if (
         arrays.any_parent_change
@@ -319,7 +404,7 @@ def _chain_product(links: list[TimeCache | StaticCache], times: IntArray) -> Lin
             acc = link if first else _compose(link, acc)
             first = False
             continue
-        arrays = cache.arrays()
+        arrays = cache_arrays(cache)
         stamps = arrays.stamps
         older = _older_indices(stamps, times)
         ratio = (times - stamps.take(older)).astype(np.float64)
@@ -343,7 +428,7 @@ def _chain_product(links: list[TimeCache | StaticCache], times: IntArray) -> Lin
 def _inverse(t: Link) -> Link:
     """Return ``t^-1`` as the scalar walk computes it: :func:`math3d.invert <invert>`'s steps."""
     tx, ty, tz, qx, qy, qz, qw = t
-    x, y, z = rotate_vector((-qx, -qy, -qz, qw), (-tx, -ty, -tz))
+    x, y, z = rotate_vector_lanes((-qx, -qy, -qz, qw), (-tx, -ty, -tz))
     return (x, y, z, -qx, -qy, -qz, qw)
 
 
@@ -351,8 +436,8 @@ def _inverse_times(inverse: Link, source: Link) -> Link:
     """Return ``inverse * source`` as the scalar walk's full-path step (math3d's ``compose``)."""
     ox, oy, oz, ix, iy, iz, iw = inverse
     sx, sy, sz, sqx, sqy, sqz, sqw = source
-    rx, ry, rz = rotate_vector((ix, iy, iz, iw), (sx, sy, sz))
-    qx, qy, qz, qw = quat_multiply((ix, iy, iz, iw), (sqx, sqy, sqz, sqw))
+    rx, ry, rz = rotate_vector_lanes((ix, iy, iz, iw), (sx, sy, sz))
+    qx, qy, qz, qw = quat_multiply_lanes((ix, iy, iz, iw), (sqx, sqy, sqz, sqw))
     return (rx + ox, ry + oy, rz + oz, qx, qy, qz, qw)
 
 

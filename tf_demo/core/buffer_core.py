@@ -41,8 +41,10 @@ import math
 import struct
 import threading
 from typing import NamedTuple
+from typing import SupportsInt
 from typing import TYPE_CHECKING
 
+from mypy_extensions import mypyc_attr
 from tf_demo.core import math3d
 from tf_demo.core._batch import batch_walk
 from tf_demo.core._batch import batch_walk_uniform
@@ -54,7 +56,6 @@ from tf_demo.core.frames_format import all_frames_as_dot
 from tf_demo.core.frames_format import all_frames_as_string
 from tf_demo.core.frames_format import all_frames_as_yaml
 from tf_demo.core.frames_format import FrameInfo
-from tf_demo.core.lazy_import import lazy_module
 from tf_demo.core.links import IDENTITY
 from tf_demo.core.links import Transform7
 from tf_demo.core.path_plan import common_time
@@ -73,8 +74,6 @@ if TYPE_CHECKING:
     import numpy.typing as npt
     from tf_demo.core.math3d import Quat
     from tf_demo.core.math3d import Vec3
-else:
-    np = lazy_module('numpy')
 
 __all__ = [
     'MAX_GRAPH_DEPTH',
@@ -88,9 +87,9 @@ QUATERNION_NORMALIZATION_TOLERANCE = 10e-3
 _LOGGER = logging.getLogger('tf_demo.core')
 #: One transform for :meth:`BufferCore.set_transforms`: parent, child, stamp_ns, translation,
 #: rotation.
-InsertTuple = tuple[str, str, int, Sequence[float], Sequence[float]]
+InsertTuple = tuple[str, str, SupportsInt, Sequence[float], Sequence[float]]
 #: :meth:`BufferCore.set_transform`'s arguments, in order.
-SetTransformArguments = tuple[str, str, int, Sequence[float], Sequence[float], str, bool]
+SetTransformArguments = tuple[str, str, SupportsInt, Sequence[float], Sequence[float], str, bool]
 _canonical_quat = math3d.canonical_quat
 _new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 #: Lanes per pass of :meth:`BufferCore.lookup_transforms`.
@@ -121,6 +120,7 @@ def _c_float(value: float) -> str:
     return f'{value:f}'
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)  # tf2_ros' Buffer subclasses tf2's BufferCore
 class BufferCore(FrameTree):
     """
     tf2's transform buffer: per-link time caches plus tree walking (thread-safe).
@@ -151,7 +151,7 @@ class BufferCore(FrameTree):
         self,
         parent: str,
         child: str,
-        stamp_ns: int,
+        stamp_ns: SupportsInt,
         translation: Sequence[float],
         rotation: Sequence[float],
         authority: str = '',
@@ -177,8 +177,7 @@ class BufferCore(FrameTree):
             tx, ty, tz = translation
             x, y, z, w = rotation
             values = pack_values(tx, ty, tz, x, y, z, w)
-            if type(stamp_ns) is not int:
-                stamp_ns = int(stamp_ns)
+            stamp = stamp_ns if type(stamp_ns) is int else int(stamp_ns)
             norm2 = x * x + y * y + z * z + w * w
         except (TypeError, ValueError, struct.error):
             child_id = None  # the checked path says what is wrong
@@ -200,7 +199,7 @@ class BufferCore(FrameTree):
             if cache is None or cache.is_static:
                 cache = self._caches[child_id] = TimeCache(self.cache_time_ns, child_id)
             reshaped = cache.latest[1] != parent_id
-            stored = cache.insert_raw(stamp_ns, values, parent_id)
+            stored = cache.insert_raw(stamp, values, parent_id)
             if stored:
                 self._authority[child_id] = authority
                 if reshaped:
@@ -209,7 +208,7 @@ class BufferCore(FrameTree):
         finally:
             lock.release()
         if not stored:
-            self._log_old_data(self._names[child_id], stamp_ns, authority)
+            self._log_old_data(self._names[child_id], stamp, authority)
             return False
         for callback in callbacks:
             callback()
@@ -303,7 +302,7 @@ class BufferCore(FrameTree):
             tx, ty, tz = translation
             x, y, z, w = rotation
             tx, ty, tz, x, y, z, w = unpack_values(pack_values(tx, ty, tz, x, y, z, w))
-            stamp_ns = int(stamp_ns)
+            stamp = int(stamp_ns)
         except (TypeError, ValueError, struct.error) as error:
             raise TypeError(
                 'set_transform needs translation (x, y, z), rotation (x, y, z, w) as numbers '
@@ -335,14 +334,14 @@ class BufferCore(FrameTree):
             sample = (tx, ty, tz, rx, ry, rz, rw, parent_id)
             # A new parent (or a new static value) changes the shape the path plans rely on.
             reshaped = cache.latest[1] != parent_id or (is_static and cache.get_data(0) != sample)
-            stored = cache.insert(stamp_ns, sample)
+            stored = cache.insert(stamp, sample)
             if stored:
                 self._authority[child_id] = authority
                 if reshaped:
                     self._shape_version += 1
             callbacks = self._callbacks_snapshot
         if not stored:
-            self._log_old_data(child, stamp_ns, authority)
+            self._log_old_data(child, stamp, authority)
             return False
         for callback in callbacks:
             callback()
@@ -659,6 +658,8 @@ class BufferCore(FrameTree):
 
         :returns: translations ``(N, 3)`` and rotations ``(N, 4)`` (x, y, z, w).
         """
+        import numpy as np
+
         times = np.asarray(times_ns, dtype=np.int64).reshape(-1)
         count = times.shape[0]
         with self._lock:

@@ -29,6 +29,7 @@ from __future__ import annotations
 from collections.abc import Container
 from typing import NoReturn
 
+from mypy_extensions import mypyc_attr
 from tf_demo.core.exceptions import BackwardExtrapolationException
 from tf_demo.core.exceptions import ConnectivityException
 from tf_demo.core.exceptions import ExtrapolationException
@@ -119,6 +120,7 @@ def _extrapolation_error(code: int, text: str) -> ExtrapolationException:
     return ExtrapolationException(text)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FrameTree:
     """
     Frame ids, one cache per child frame, and tf2's walks over them (no lock: see module).

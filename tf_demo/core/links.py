@@ -18,26 +18,25 @@ The walk's arithmetic: compose a list of links at one time, and a route of two s
 tf2's ``walkToTopParent`` accumulates ``top_T_frame`` up each side of the walk and combines the
 two sides at the end; :class:`~tf_demo.core.frame_tree.FrameTree` works out which links make a
 route (the full walk, or a remembered :mod:`~tf_demo.core.path_plan`) and this module does the
-numbers.  :func:`accumulate_links` inlines :meth:`TimeCache.get_data
-<tf_demo.core.time_cache.TimeCache.get_data>` (tf2's ``findClosest`` and ``interpolate``) and the
-composition: per link only locals, no tuple per link.  The inlined lerp, slerp and composition are
-copies of :mod:`~tf_demo.core.math3d`'s, kept for speed and pinned to it (within 1e-12) by
-``test/core/test_math3d_inlined.py``.
+numbers with :mod:`~tf_demo.core.math3d`'s functions: each link's sample from its cache
+(:meth:`~tf_demo.core.time_cache.Link.sample_at_time`, tf2's ``findClosest`` and
+``interpolate``), composed as tf2's ``TransformAccum`` does.
 """
 
 from __future__ import annotations
 
-from bisect import bisect_right
-import math
+from typing import Final
 from typing import TYPE_CHECKING
 
-from tf_demo.core import math3d
+from tf_demo.core.math3d import compose
+from tf_demo.core.math3d import invert
+from tf_demo.core.math3d import Quat
+from tf_demo.core.math3d import Vec3
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-    from tf_demo.core.time_cache import StaticCache
-    from tf_demo.core.time_cache import TimeCache
+    from tf_demo.core.time_cache import Link
 
 __all__ = [
     'IDENTITY',
@@ -52,104 +51,40 @@ __all__ = [
 
 # The shapes of a route (what tf2's walk found).
 #: The target is above the source (or is the top): ``top_T_source`` of the source's links.
-ROUTE_UP = 0
+ROUTE_UP: Final = 0
 #: The source is above the target: the inverse of ``top_T_target``.
-ROUTE_DOWN = 1
+ROUTE_DOWN: Final = 1
 #: Both sides meet at the top: ``(top_T_target)^-1 * top_T_source``.
-ROUTE_ACROSS = 2
+ROUTE_ACROSS: Final = 2
 
 #: ``(shape, source side links, target side links)``, each side bottom first.
-Route = tuple[int, 'Sequence[TimeCache | StaticCache]', 'Sequence[TimeCache | StaticCache]']
+Route = tuple[int, 'Sequence[Link]', 'Sequence[Link]']
 #: A transform as seven floats: translation x, y, z, then rotation x, y, z, w.
 Transform7 = tuple[float, float, float, float, float, float, float]
 #: The identity, one shared object: a lookup tests ``is IDENTITY`` to skip canonicalising.
 IDENTITY: Transform7 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
 
-_bisect_right = bisect_right
-_sin = math.sin
-_cos = math.cos
 
-
-def accumulate_links(links: Sequence[TimeCache | StaticCache], time_ns: int) -> Transform7 | None:
+def accumulate_links(links: Sequence[Link], time_ns: int) -> Transform7 | None:
     """
     Return ``top_T_bottom`` = ``links[-1] * ... * links[0]`` at ``time_ns``, as 7 floats.
 
     None when a dynamic link has no data at ``time_ns`` (0: its newest sample).
     """
-    x = y = z = qx = qy = qz = 0.0
-    qw = 1.0
-    sin = _sin
-    cos = _cos
-    for depth, cache in enumerate(links):
-        if cache.is_static:
-            lx, ly, lz, px, py, pz, pw, _ = cache._sample
-        else:
-            view = cache._view
-            if view is None:
-                view = cache.view()
-            earliest, latest, scale, start, last, stamps, samples, intervals = view
-            if not (earliest < time_ns < latest and time_ns):
-                # At an end of the history, time 0 (the newest sample), or no data.
-                if start > last:
-                    return None
-                if time_ns == latest or not time_ns:
-                    lx, ly, lz, px, py, pz, pw, _ = samples[last] or cache.sample_at(last)
-                elif time_ns == earliest:
-                    lx, ly, lz, px, py, pz, pw, _ = samples[start] or cache.sample_at(start)
-                else:
-                    return None
-            else:
-                # Interior: a linear guess (exact for evenly spaced streams), else bisect.
-                index = start + int((time_ns - earliest) * scale)
-                if index >= last:
-                    index = last - 1
-                one_stamp = stamps[index]
-                if one_stamp <= time_ns:
-                    two_stamp = stamps[index + 1]
-                    if two_stamp <= time_ns:
-                        index = _bisect_right(stamps, time_ns, index + 2, last + 1) - 1
-                        one_stamp = stamps[index]
-                        two_stamp = stamps[index + 1]
-                else:
-                    index = _bisect_right(stamps, time_ns, start, index) - 1
-                    one_stamp = stamps[index]
-                    two_stamp = stamps[index + 1]
-                lx, ly, lz, px, py, pz, pw, _ = samples[index] or cache.sample_at(index)
-                theta, dx, dy, dz, bx, by, bz, bw = intervals[index] or cache.interval_at(index)
-                if theta >= 0.0:  # negative: a parent change, the older sample as it is
-                    # tf2's interpolate: lerp the translation, slerp the rotation.
-                    ratio = (time_ns - one_stamp) / (two_stamp - one_stamp)
-                    lx += ratio * dx
-                    ly += ratio * dy
-                    lz += ratio * dz
-                    if theta:
-                        angle = ratio * theta
-                        c = cos(angle)
-                        s = sin(angle)
-                        px = px * c + bx * s
-                        py = py * c + by * s
-                        pz = pz * c + bz * s
-                        pw = pw * c + bw * s
-        if depth:
-            # link * acc.  p' = R(q) p + t with v + 2w(u x v) + 2u x (u x v): fewer operations
-            # than tf2's q * v * conj(q), equal to about 1e-16.
-            ux = 2.0 * (py * z - pz * y)
-            uy = 2.0 * (pz * x - px * z)
-            uz = 2.0 * (px * y - py * x)
-            x, y, z = (
-                x + pw * ux + (py * uz - pz * uy) + lx,
-                y + pw * uy + (pz * ux - px * uz) + ly,
-                z + pw * uz + (px * uy - py * ux) + lz,
-            )
-            qx, qy, qz, qw = (
-                pw * qx + px * qw + py * qz - pz * qy,
-                pw * qy + py * qw + pz * qx - px * qz,
-                pw * qz + pz * qw + px * qy - py * qx,
-                pw * qw - px * qx - py * qy - pz * qz,
-            )
-        else:
-            x, y, z, qx, qy, qz, qw = lx, ly, lz, px, py, pz, pw
-    return x, y, z, qx, qy, qz, qw
+    t: Vec3 = (0.0, 0.0, 0.0)
+    q: Quat = (0.0, 0.0, 0.0, 1.0)
+    first = True
+    for link in links:
+        if not link.covers(time_ns):
+            return None
+        lx, ly, lz, px, py, pz, pw, _ = link.sample_at_time(time_ns)
+        if first:
+            t = (lx, ly, lz)
+            q = (px, py, pz, pw)
+            first = False
+        else:  # tf2's TransformAccum: link * accumulated
+            t, q = compose((lx, ly, lz), (px, py, pz, pw), t, q)
+    return (t[0], t[1], t[2], q[0], q[1], q[2], q[3])
 
 
 def compose_route(route: Route, time_ns: int) -> Transform7 | None:
@@ -161,20 +96,19 @@ def compose_route(route: Route, time_ns: int) -> Transform7 | None:
     None when a link of the route has no data at ``time_ns``.
     """
     shape, source_links, target_links = route
-    if shape != ROUTE_UP:
-        target_side = accumulate_links(target_links, time_ns)
-        if target_side is None:
-            return None
-        tx, ty, tz, tqx, tqy, tqz, tqw = target_side
     if shape == ROUTE_UP:
         return accumulate_links(source_links, time_ns)
-    iq = (-tqx, -tqy, -tqz, tqw)
-    ix, iy, iz = math3d.rotate_vector(iq, (-tx, -ty, -tz))
+    target_side = accumulate_links(target_links, time_ns)
+    if target_side is None:
+        return None
+    tx, ty, tz, tqx, tqy, tqz, tqw = target_side
+    # tf2's finalize: the inverse of top_T_target, then times top_T_source.
+    it, iq = invert((tx, ty, tz), (tqx, tqy, tqz, tqw))
     if shape == ROUTE_DOWN:
-        return ix, iy, iz, -tqx, -tqy, -tqz, tqw
+        return (it[0], it[1], it[2], iq[0], iq[1], iq[2], iq[3])
     source_side = accumulate_links(source_links, time_ns)
     if source_side is None:
         return None
     sx, sy, sz, sqx, sqy, sqz, sqw = source_side
-    rx, ry, rz = math3d.rotate_vector(iq, (sx, sy, sz))
-    return (rx + ix, ry + iy, rz + iz, *math3d.quat_multiply(iq, (sqx, sqy, sqz, sqw)))
+    rt, rq = compose(it, iq, (sx, sy, sz), (sqx, sqy, sqz, sqw))
+    return (rt[0], rt[1], rt[2], rq[0], rq[1], rq[2], rq[3])

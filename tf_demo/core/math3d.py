@@ -27,19 +27,20 @@ Conventions (the same as tf2):
 The scalar functions work on plain tuples of floats and follow tf2's arithmetic term by term, so
 results agree with tf2's C++ core to the last bits in most cases.  numpy is used only for
 matrices (:func:`homogeneous_from_transform`) and for the ``*_batch`` helpers that work on
-``(N, 3)`` / ``(N, 4)`` arrays.  :func:`quat_multiply` and :func:`rotate_vector` also take
-*lanes*: tuples whose components are numpy arrays (one value per lane) or floats, which is how
-the vectorised walk (:mod:`tf_demo.core._batch`) and the ``*_batch`` helpers use them.
+``(N, 3)`` / ``(N, 4)`` arrays.  :func:`quat_multiply_lanes` and :func:`rotate_vector_lanes`
+are the same products on *lanes*: tuples whose components are numpy arrays (one value per lane)
+or floats, which is how the vectorised walk (:mod:`tf_demo.core._batch`) and the ``*_batch``
+helpers use them.  This module is compiled by mypyc where it can be (``tf_demo.build_info``):
+the scalar functions take and return unboxed floats there; numpy is imported by the functions
+that use it, on first use.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 import math
+from typing import Final
 from typing import TYPE_CHECKING
-from typing import TypeVar
-
-from tf_demo.core.lazy_import import lazy_module
 
 if TYPE_CHECKING:
     import numpy as np
@@ -48,12 +49,8 @@ if TYPE_CHECKING:
     FloatArray = npt.NDArray[np.float64]
     #: One component for many lanes at once (an array), or the same float for every lane.
     Lane = float | FloatArray
-else:
-    np = lazy_module('numpy')
-
-#: The component type of :func:`quat_multiply` and :func:`rotate_vector`: floats in, floats out;
-#: lanes in, lanes out.
-Component = TypeVar('Component', float, 'Lane')
+    Lanes3 = tuple[Lane, Lane, Lane]
+    Lanes4 = tuple[Lane, Lane, Lane, Lane]
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
@@ -62,8 +59,7 @@ Matrix3 = tuple[Vec3, Vec3, Vec3]
 IDENTITY_QUAT: Quat = (0.0, 0.0, 0.0, 1.0)
 ZERO_VEC: Vec3 = (0.0, 0.0, 0.0)
 
-_HALF_PI = math.pi / 2.0
-_sqrt = math.sqrt
+_HALF_PI: Final = math.pi / 2.0
 
 __all__ = [
     'IDENTITY_QUAT',
@@ -93,9 +89,11 @@ __all__ = [
     'quat_from_rpy',
     'quat_multiply',
     'quat_multiply_batch',
+    'quat_multiply_lanes',
     'quat_normalize',
     'rotate_vector',
     'rotate_vector_batch',
+    'rotate_vector_lanes',
     'rpy_from_matrix',
     'rpy_from_quat',
     'slerp',
@@ -104,11 +102,20 @@ __all__ = [
 ]
 
 
-def quat_multiply(
-    a: tuple[Component, Component, Component, Component],
-    b: tuple[Component, Component, Component, Component],
-) -> tuple[Component, Component, Component, Component]:
+def quat_multiply(a: Quat, b: Quat) -> Quat:
     """Return the Hamilton product ``a * b`` (``b`` is applied first), as tf2's ``operator*``."""
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by + ay * bw + az * bx - ax * bz,
+        aw * bz + az * bw + ax * by - ay * bx,
+        aw * bw - ax * bx - ay * by - az * bz,
+    )
+
+
+def quat_multiply_lanes(a: Lanes4, b: Lanes4) -> Lanes4:
+    """:func:`quat_multiply` on lanes (components that are arrays or floats), term for term."""
     ax, ay, az, aw = a
     bx, by, bz, bw = b
     return (
@@ -137,14 +144,26 @@ def quat_normalize(q: Quat) -> Quat:
     return (q[0] * inv, q[1] * inv, q[2] * inv, q[3] * inv)
 
 
-def rotate_vector(
-    q: tuple[Component, Component, Component, Component],
-    v: tuple[Component, Component, Component],
-) -> tuple[Component, Component, Component]:
+def rotate_vector(q: Quat, v: Vec3) -> Vec3:
     """Rotate ``v`` by ``q``: the vector part of ``q * (v, 0) * conj(q)`` (tf2 ``quatRotate``)."""
     qx, qy, qz, qw = q
     vx, vy, vz = v
     # r = q * v (quaternion times pure vector), then r * conj(q), term order as in tf2.
+    rx = qw * vx + qy * vz - qz * vy
+    ry = qw * vy + qz * vx - qx * vz
+    rz = qw * vz + qx * vy - qy * vx
+    rw = -qx * vx - qy * vy - qz * vz
+    return (
+        rw * -qx + rx * qw + ry * -qz - rz * -qy,
+        rw * -qy + ry * qw + rz * -qx - rx * -qz,
+        rw * -qz + rz * qw + rx * -qy - ry * -qx,
+    )
+
+
+def rotate_vector_lanes(q: Lanes4, v: Lanes3) -> Lanes3:
+    """:func:`rotate_vector` on lanes (components that are arrays or floats), term for term."""
+    qx, qy, qz, qw = q
+    vx, vy, vz = v
     rx = qw * vx + qy * vz - qz * vy
     ry = qw * vy + qz * vx - qx * vz
     rz = qw * vz + qx * vy - qy * vx
@@ -412,7 +431,7 @@ def canonical_quat(q: Sequence[float]) -> Quat:
     if trace > 0.0:
         wx, wy, wz = w * xs, w * ys, w * zs
         xy, xz, yz = x * ys, x * zs, y * zs
-        root = _sqrt(trace + 1.0)
+        root = math.sqrt(trace + 1.0)
         half_inverse = 0.5 / root
         return (
             ((yz + wx) - (yz - wx)) * half_inverse,
@@ -425,6 +444,8 @@ def canonical_quat(q: Sequence[float]) -> Quat:
 
 def homogeneous_from_transform(t: Vec3, q: Quat) -> npt.NDArray[np.float64]:
     """Return the 4x4 homogeneous matrix of ``(t, q)``."""
+    import numpy as np
+
     out = np.eye(4)
     out[:3, :3] = matrix_from_quat(q)
     out[:3, 3] = t
@@ -437,6 +458,8 @@ def transform_from_homogeneous(matrix: npt.ArrayLike) -> tuple[Vec3, Quat]:
 
     :raises ValueError: if ``matrix`` is not 4x4.
     """
+    import numpy as np
+
     m = np.asarray(matrix, dtype=float)
     if m.shape != (4, 4):
         raise ValueError(f'expected a 4x4 matrix, got shape {m.shape}')
@@ -462,18 +485,22 @@ def quat_multiply_batch(
     a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.float64]:
     """Row-wise :func:`quat_multiply` of two ``(N, 4)`` arrays (either may broadcast)."""
+    import numpy as np
+
     ax, ay, az, aw = _columns(a)
     bx, by, bz, bw = _columns(b)
-    return np.stack(quat_multiply((ax, ay, az, aw), (bx, by, bz, bw)), axis=-1)
+    return np.stack(quat_multiply_lanes((ax, ay, az, aw), (bx, by, bz, bw)), axis=-1)
 
 
 def rotate_vector_batch(
     q: npt.NDArray[np.float64], v: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.float64]:
     """Row-wise :func:`rotate_vector` of ``(N, 4)`` quaternions and ``(N, 3)`` vectors."""
+    import numpy as np
+
     qx, qy, qz, qw = _columns(q)
     vx, vy, vz = _columns(v)
-    return np.stack(rotate_vector((qx, qy, qz, qw), (vx, vy, vz)), axis=-1)
+    return np.stack(rotate_vector_lanes((qx, qy, qz, qw), (vx, vy, vz)), axis=-1)
 
 
 def compose_batch(
@@ -490,6 +517,8 @@ def slerp_batch(
     q0: npt.NDArray[np.float64], q1: npt.NDArray[np.float64], ratio: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.float64]:
     """Row-wise :func:`slerp` with the same special cases (``theta == 0`` returns ``q0``)."""
+    import numpy as np
+
     dot = np.einsum('ij,ij->i', q0, q1)
     scale = np.sqrt(np.einsum('ij,ij->i', q0, q0) * np.einsum('ij,ij->i', q1, q1))
     cosine = np.clip(np.abs(dot) / scale, -1.0, 1.0)
@@ -506,6 +535,8 @@ def slerp_batch(
 
 def matrix_from_quat_batch(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     """Row-wise :func:`matrix_from_quat`: ``(N, 4)`` quaternions to ``(N, 3, 3)`` matrices."""
+    import numpy as np
+
     x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
     with np.errstate(divide='ignore', invalid='ignore'):
         s = 2.0 / (x * x + y * y + z * z + w * w)
@@ -528,6 +559,8 @@ def matrix_from_quat_batch(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64
 
 def quat_from_matrix_batch(m: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     """Row-wise :func:`quat_from_matrix`: ``(N, 3, 3)`` matrices to ``(N, 4)`` quaternions."""
+    import numpy as np
+
     count = m.shape[0]
     out = np.empty((count, 4))
     trace = m[:, 0, 0] + m[:, 1, 1] + m[:, 2, 2]
@@ -572,6 +605,8 @@ def canonical_quat_rows(
     The same arithmetic as the scalar function, on whole arrays; contiguous components (and
     arrays that fit in cache) make it several times faster than on an ``(N, 4)`` array's columns.
     """
+    import numpy as np
+
     with np.errstate(divide='ignore', invalid='ignore'):
         s = 2.0 / (x * x + y * y + z * z + w * w)
         xs, ys, zs = x * s, y * s, z * s
@@ -603,6 +638,8 @@ def canonical_quat_batch(
     :param out: ``(N, 4)`` array to write into (may be ``q`` itself); a new C-contiguous one
         by default.
     """
+    import numpy as np
+
     components = canonical_quat_rows(q[:, 0], q[:, 1], q[:, 2], q[:, 3])
     result = np.empty((q.shape[0], 4)) if out is None else out
     for column, values in enumerate(components):

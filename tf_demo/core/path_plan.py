@@ -37,12 +37,12 @@ from tf_demo.core.links import ROUTE_ACROSS
 from tf_demo.core.links import ROUTE_DOWN
 from tf_demo.core.links import ROUTE_UP
 from tf_demo.core.time_cache import StaticCache
+from tf_demo.core.time_cache import TimeCache
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
     from tf_demo.core.links import Transform7
-    from tf_demo.core.time_cache import TimeCache
 
 __all__ = ['PathPlan', 'common_time', 'compose_plan', 'has_data', 'plan_path']
 
@@ -72,7 +72,7 @@ def _ancestors(
     frames = [frame]
     cache = caches[frame]
     while cache is not None:
-        if not cache.is_static and cache.mixed:
+        if isinstance(cache, TimeCache) and cache.mixed:
             return None
         frame = cache.latest[1]  # 0 for an empty cache
         if not frame or len(frames) > max_depth:
@@ -118,7 +118,7 @@ def _dynamic(
     found = []
     for frame in frames:
         cache = caches[frame]
-        if cache is not None and not cache.is_static:
+        if isinstance(cache, TimeCache):
             found.append(cache)
     return found
 
@@ -183,12 +183,7 @@ def common_time(plan: PathPlan) -> int:
 
 def has_data(caches: tuple[TimeCache, ...], time_ns: int) -> bool:
     """Return whether every one of ``caches`` has data at ``time_ns`` (0: the newest)."""
-    if time_ns:
-        for cache in caches:
-            stamps = cache._stamps
-            if not stamps[cache._start] <= time_ns <= stamps[-1]:
-                return False
-    return True
+    return all(cache.covers(time_ns) for cache in caches)
 
 
 def compose_plan(plan: PathPlan, time_ns: int) -> Transform7 | None:

@@ -18,13 +18,14 @@ Per-frame transform history: tf2's ``TimeCache`` and ``StaticCache``.
 A cache belongs to the *child* frame of a link and stores, per sample, the stamp, the
 translation, the rotation and the parent frame id (the parent may change over time).
 
-Storage is compact, one typed array per field in ascending stamp order: int64 stamps, seven
-doubles per sample (translation, then the rotation *as inserted*) and int64 parent ids, plus a
-list that memoises each sample as tf2 stores it (:data:`Sample`, rotation normalised and
-sign-canonicalised bit for bit by :func:`~tf_demo.core.math3d.canonical_quat`), made the first
-time a lookup reads it.  Most samples of a busy ``/tf`` are never read: they cost 80 bytes and no
-canonicalisation.  Among equal stamps the most recently inserted sample comes last.  This is
-tf2's newest-first ``std::list`` read backwards, so every tie-breaking rule of tf2 carries over:
+Storage is compact, in ascending stamp order: a list of stamps (which compiled code reads
+without allocating), typed arrays of seven doubles per sample (translation, then the rotation *as
+inserted*) and of int64 parent ids, plus a list that memoises each sample as tf2 stores it
+(:data:`Sample`, rotation normalised and sign-canonicalised bit for bit by
+:func:`~tf_demo.core.math3d.canonical_quat`), made the first time a lookup reads it.  Most
+samples of a busy ``/tf`` are never read: they cost about 120 bytes and no canonicalisation.
+Among equal stamps the most recently inserted sample comes last.  This is tf2's newest-first
+``std::list`` read backwards, so every tie-breaking rule of tf2 carries over:
 
 * lookup at the newest stamp returns the newest-inserted sample of that stamp;
 * lookup at the oldest stamp returns the first-inserted sample of that stamp;
@@ -43,26 +44,17 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left
 from bisect import bisect_right
-import math
 from struct import Struct
-from typing import ClassVar
-from typing import Literal
+from typing import Final
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
-from tf_demo.core.lazy_import import lazy_module
 from tf_demo.core.math3d import canonical_quat
-from tf_demo.core.math3d import canonical_quat_batch
 from tf_demo.core.math3d import lerp
 from tf_demo.core.math3d import slerp
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
-
-    import numpy as np
-    import numpy.typing as npt
-else:
-    np = lazy_module('numpy')
 
 __all__ = [
     'DEFAULT_CACHE_TIME_NS',
@@ -72,9 +64,7 @@ __all__ = [
     'ERROR_FORWARD_EXTRAPOLATION',
     'ERROR_LOOKUP',
     'ERROR_NO_DATA_FOR_EXTRAPOLATION',
-    'INTERVAL_COLUMNS',
-    'CacheArrays',
-    'CacheView',
+    'Link',
     'Sample',
     'StaticCache',
     'TimeCache',
@@ -95,27 +85,15 @@ ERROR_BACKWARD_EXTRAPOLATION = 7
 ERROR_FORWARD_EXTRAPOLATION = 8
 ERROR_NO_DATA_FOR_EXTRAPOLATION = 9
 
+#: A sample as tf2 stores it: translation, rotation (normalised, canonical sign), parent id.
 Sample = tuple[float, float, float, float, float, float, float, int]
-#: The interpolation constants of one interval between samples: :meth:`TimeCache.interval_at`.
-Interval = tuple[float, float, float, float, float, float, float, float]
-#: :meth:`TimeCache.view`: earliest, latest, scale, start, last, stamps, samples (None: not read
-#: yet, see :meth:`TimeCache.sample_at`), intervals (None: not made yet, see
-#: :meth:`TimeCache.interval_at`).
-CacheView = tuple[
-    int, int, float, int, int, 'array[int]', list[Sample | None], list[Interval | None]
-]
 
-_NS_PER_S = 1_000_000_000
-_acos = math.acos
-_sin = math.sin
-_cos = math.cos
-_VALUES = Struct('7d')
-#: :meth:`TimeCache.interval_at` of an interval across a parent change (no interpolation).
-_PARENT_CHANGE: Interval = (-1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+_NS_PER_S: Final = 1_000_000_000
+_VALUES: Final = Struct('7d')
 #: ``pack_values(tx, ty, tz, qx, qy, qz, qw)``: one sample's seven doubles, as a cache stores them.
-pack_values = _VALUES.pack
+pack_values: Final = _VALUES.pack
 #: The inverse of :data:`pack_values`.
-unpack_values = _VALUES.unpack
+unpack_values: Final = _VALUES.unpack
 
 
 class TransformStorage(NamedTuple):
@@ -126,33 +104,6 @@ class TransformStorage(NamedTuple):
     rotation: tuple[float, float, float, float]
     parent_id: int
     child_id: int
-
-
-#: Rows of :attr:`CacheArrays.intervals`, one column per interval between samples k and k + 1:
-#: older translation (3), newer minus older translation (3), older rotation (4), newer rotation
-#: with the slerp sign applied (4), slerp angle, ``1 / sin(angle)`` (0 for a zero angle), the
-#: interval length in ns as a float, ``cos(angle) / sin(angle)`` (0 for a zero angle), and
-#: ``newer / sin(angle) - older * cot(angle)`` (4; the sine coefficient of the slerp).
-INTERVAL_COLUMNS = 22
-
-
-class CacheArrays(NamedTuple):
-    """A :class:`TimeCache`'s live samples as numpy arrays, with per-interval constants."""
-
-    #: ``(K,)`` ascending stamps.
-    stamps: npt.NDArray[np.int64]
-    #: ``(7, K)``: one contiguous row per component (tx, ty, tz, qx, qy, qz, qw).
-    values: npt.NDArray[np.float64]
-    #: ``(K,)`` parent ids.
-    parents: npt.NDArray[np.int64]
-    #: ``(INTERVAL_COLUMNS, K - 1)`` lerp / slerp constants, one contiguous row each.
-    intervals: npt.NDArray[np.float64]
-    #: Some interval has a zero slerp angle (its rotation is the older one, as tf2).
-    any_still: bool
-    #: Some interval changes parent (no interpolation across it).
-    any_parent_change: bool
-    #: Largest slerp angle of any interval (0 when there is none).
-    max_theta: float
 
 
 def duration_to_sec(duration_ns: int) -> float:
@@ -177,15 +128,19 @@ def _stored_sample(values: Sequence[float], parent_id: int) -> Sample:
 
 
 def _older_index(  # noqa: PLR0917 (hot path: positional arguments are fastest)
-    stamps: array[int], time_ns: int, start: int, end: int, earliest: int, latest: int
+    stamps: list[int], time_ns: int, start: int, end: int, earliest: int, latest: int
 ) -> int:
     """
     Return the last index in ``[start, end)`` whose stamp is <= ``time_ns`` (interior times).
 
     Streams are usually evenly spaced, so a linear guess lands on the answer or next to it;
-    bisection only narrows what the guess missed.
+    bisection only narrows what the guess missed.  The guess is made in doubles: products of
+    nanosecond stamps overflow the machine integers that compiled code computes with.
     """
-    guess = start + (time_ns - earliest) * (end - 1 - start) // (latest - earliest)
+    guess = start + int(
+        float(time_ns - earliest) * float(end - 1 - start) / float(latest - earliest)
+    )
+    guess = min(guess, end - 2)  # rounding, next to the newest stamp
     if stamps[guess] <= time_ns:
         if stamps[guess + 1] > time_ns:
             return guess
@@ -193,44 +148,65 @@ def _older_index(  # noqa: PLR0917 (hot path: positional arguments are fastest)
     return bisect_right(stamps, time_ns, start, guess) - 1
 
 
-class TimeCache:
+class Link:
+    """
+    What the walk asks of a link's history: :class:`TimeCache` (dynamic) or :class:`StaticCache`.
+
+    :meth:`covers` says whether the link has data at a time and :meth:`sample_at_time` gives
+    it; the walk (:mod:`~tf_demo.core.links`) composes what they return.
+    """
+
+    __slots__ = ('child_id', 'is_static', 'latest')
+
+    def __init__(self, child_id: int, is_static: bool) -> None:
+        self.child_id = child_id
+        #: Whether the link is static (one sample, valid at every time).
+        self.is_static = is_static
+        #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent);
+        #: static links: ``(0, parent id)``.
+        self.latest: tuple[int, int] = (0, 0)
+
+    def covers(self, time_ns: int) -> bool:
+        """Return whether the link has data at ``time_ns`` (0: the newest)."""
+        raise NotImplementedError
+
+    def sample_at_time(self, time_ns: int) -> Sample:
+        """Return the (possibly interpolated) sample at ``time_ns``, which :meth:`covers`."""
+        raise NotImplementedError
+
+    def get_data(self, time_ns: int) -> Sample | None:
+        """Return the (possibly interpolated) sample at ``time_ns`` (0 = newest), or None."""
+        return self.sample_at_time(time_ns) if self.covers(time_ns) else None
+
+
+class TimeCache(Link):
     """History of one dynamic link, with tf2's ordering, pruning and interpolation."""
 
-    is_static: ClassVar[Literal[False]] = False
-
     __slots__ = (
-        '_arrays',
-        '_intervals',
         '_max_storage_ns',
         '_parents',
         '_samples',
         '_stamps',
         '_start',
         '_values',
-        '_view',
-        'child_id',
-        'latest',
+        'arrays_memo',
     )
 
     def __init__(self, max_storage_ns: int = DEFAULT_CACHE_TIME_NS, child_id: int = 0) -> None:
+        super().__init__(child_id, False)
         self._max_storage_ns = max_storage_ns
-        self.child_id = child_id
-        self._stamps: array[int] = array('q')
+        #: Ascending stamps: a list, whose reads compiled code takes without allocating.
+        self._stamps: list[int] = []
         #: Seven doubles per sample: translation, rotation as inserted.
         self._values: array[float] = array('d')
         self._parents: array[int] = array('q')
         #: Each sample as tf2 stores it, None until first read (:meth:`sample_at`).  This list
-        #: and the next may be shorter than the stamps: what is past their end is None too
-        #: (an insert at the end does not touch them; :meth:`view` extends them).
+        #: may be shorter than the stamps: what is past its end is None too (an insert at the
+        #: end does not touch it).
         self._samples: list[Sample | None] = []
-        #: Per interval to the next sample, its interpolation constants (:meth:`interval_at`),
-        #: or None.
-        self._intervals: list[Interval | None] = []
         self._start = 0
-        self._view: CacheView | None = None
-        #: ``(newest stamp, its parent id)``, ``(0, 0)`` when empty (tf2 getLatestTimeAndParent).
-        self.latest: tuple[int, int] = (0, 0)
-        self._arrays: CacheArrays | None = None
+        #: What the batch walk made of the live samples (numpy arrays), None after any change.
+        self.arrays_memo: object = None
 
     # --- insertion -----------------------------------------------------------------------
 
@@ -257,7 +233,7 @@ class TimeCache:
         :returns: False when the stamp is too old (tf2's TF_OLD_DATA case); True otherwise,
             including for a silently dropped exact duplicate.
         """
-        self._view = self._arrays = None
+        self.arrays_memo = None
         stamps = self._stamps
         start = self._start
         end = len(stamps)
@@ -274,7 +250,6 @@ class TimeCache:
                     del self._values[: 7 * start]
                     del self._parents[:start]
                     del self._samples[:start]
-                    del self._intervals[:start]
                     end -= start
                     start = self._start = 0
             position = end
@@ -309,28 +284,23 @@ class TimeCache:
         if position < len(samples) or sample is not None:
             self._memos_up_to(position - 1)
             samples.insert(position, sample)
-            intervals = self._intervals
-            intervals.insert(position, None)
-            if position:
-                intervals[position - 1] = None  # that interval now ends at the new sample
         return True
 
     def _memos_up_to(self, index: int) -> None:
-        """Make the memo lists reach ``index`` (and the stamps' end, at most)."""
+        """Make the sample memo list reach ``index`` (and the stamps' end, at most)."""
+        samples = self._samples
         size = min(index + 1, len(self._stamps))
-        for memos in (self._samples, self._intervals):
-            if len(memos) < size:
-                memos.extend([None] * (size - len(memos)))
+        if len(samples) < size:
+            samples.extend([None] * (size - len(samples)))
 
     def clear(self) -> None:
         """Drop every sample (tf2 clearList)."""
-        self._stamps = array('q')
+        self._stamps = []
         self._values = array('d')
         self._parents = array('q')
         self._samples = []
-        self._intervals = []
         self._start = 0
-        self._view = self._arrays = None
+        self.arrays_memo = None
         self.latest = (0, 0)
 
     # --- queries -------------------------------------------------------------------------
@@ -355,94 +325,33 @@ class TimeCache:
             )
         return sample
 
-    def interval_at(self, index: int) -> Interval:
-        """
-        Return the constants of tf2's interpolation from sample ``index`` to the next (made once).
+    def covers(self, time_ns: int) -> bool:
+        """Return whether the cache has data at ``time_ns`` (0: the newest; tf2's findClosest)."""
+        stamps = self._stamps
+        start = self._start
+        if start == len(stamps):
+            return False
+        return not time_ns or stamps[start] <= time_ns <= stamps[-1]
 
-        ``(theta, dx, dy, dz, bx, by, bz, bw)``: tf2's ``slerp`` angle (``acos`` of the clamped
-        absolute dot product, its shortest path), the newer minus the older translation, and
-        the sine coefficient ``b = newer / sin(theta) - older * cot(theta)`` (the newer rotation
-        negated when the dot product is negative; 0 for a zero angle), so that at ``ratio``
-        the translation is ``older + ratio * d`` and the rotation ``older * cos(ratio * theta)
-        + b * sin(ratio * theta)``, tf2's slerp by the sine of a difference.  The same
-        constants as :attr:`CacheArrays.intervals`.  A negative ``theta`` marks a parent change:
-        no interpolation, the older sample as it is.
+    def sample_at_time(self, time_ns: int) -> Sample:
         """
-        tx0, ty0, tz0, px, py, pz, pw, parent = self.sample_at(index)
-        tx1, ty1, tz1, x1, y1, z1, w1, parent1 = self.sample_at(index + 1)
-        if parent1 != parent:
-            interval = _PARENT_CHANGE
-        else:
-            dot = px * x1 + py * y1 + pz * z1 + pw * w1
-            magnitude = -dot if dot < 0 else dot
-            theta = _acos(magnitude if magnitude < 1.0 else 1.0)
-            if theta != 0.0:
-                d = 1.0 / _sin(theta)
-                d1 = -d if dot < 0 else d
-                cot = _cos(theta) * d
-                b = (
-                    x1 * d1 - px * cot,
-                    y1 * d1 - py * cot,
-                    z1 * d1 - pz * cot,
-                    w1 * d1 - pw * cot,
-                )
-            else:
-                b = (0.0, 0.0, 0.0, 0.0)
-            interval = (theta, tx1 - tx0, ty1 - ty0, tz1 - tz0, *b)
-        self._intervals[index] = interval
-        return interval
-
-    def view(self) -> CacheView:
-        """
-        Return (and keep until the next insert or clear) the walk's snapshot of this cache.
-
-        ``(earliest, latest, scale, start, last, stamps, samples, intervals)``: the oldest and
-        newest stamps (``1, 0`` when empty, so that no time is inside), ``(last - start) /
-        (latest - earliest)`` for a first guess of the interval, and the live index range
-        ``[start, last]`` of the stamp array, the sample list (an entry not read yet is None:
-        :meth:`sample_at` makes it) and the interval list (likewise, :meth:`interval_at`).
-        """
-        view = self._view
-        if view is None:
-            stamps = self._stamps
-            start = self._start
-            last = len(stamps) - 1
-            self._memos_up_to(last)
-            samples = self._samples
-            if start > last:
-                view = (1, 0, 0.0, start, last, stamps, samples, self._intervals)
-            else:
-                earliest = stamps[start]
-                latest = stamps[last]
-                scale = (last - start) / (latest - earliest) if latest != earliest else 0.0
-                view = (earliest, latest, scale, start, last, stamps, samples, self._intervals)
-            self._view = view
-        return view
-
-    def get_data(self, time_ns: int) -> Sample | None:
-        """
-        Return the (possibly interpolated) sample at ``time_ns`` (0 = newest), or None.
+        Return the (possibly interpolated) sample at ``time_ns``, which :meth:`covers`.
 
         This is tf2's ``findClosest`` plus ``interpolate``: :func:`~tf_demo.core.math3d.lerp` of
         the translation, :func:`~tf_demo.core.math3d.slerp` of the rotation, never across a
-        parent change (the older sample is returned instead).  The lookup walk inlines the same
-        step (``links.accumulate_links``).  Use :meth:`explain_failure` for tf2's error
-        text when None is returned.
+        parent change (the older sample is returned instead).  Among equal stamps, the newest
+        stamp gives the newest-inserted sample and the oldest the first-inserted (tf2's list).
         """
         stamps = self._stamps
-        end = len(stamps)
+        last = len(stamps) - 1
+        latest = stamps[last]
+        if time_ns == 0 or time_ns >= latest:
+            return self.sample_at(last)
         start = self._start
-        if start == end:
-            return None
-        if time_ns == 0:
-            return self.sample_at(end - 1)
-        latest = stamps[end - 1]
-        if time_ns >= latest:
-            return self.sample_at(end - 1) if time_ns == latest else None
         earliest = stamps[start]
         if time_ns <= earliest:
-            return self.sample_at(start) if time_ns == earliest else None
-        index = _older_index(stamps, time_ns, start, end, earliest, latest)
+            return self.sample_at(start)
+        index = _older_index(stamps, time_ns, start, last + 1, earliest, latest)
         one = self.sample_at(index)
         two = self.sample_at(index + 1)
         tx0, ty0, tz0, x0, y0, z0, w0, parent = one
@@ -535,67 +444,30 @@ class TimeCache:
             for s in (self.sample_at(index),)
         ]
 
-    def arrays(self) -> CacheArrays:
+    def live_storage(self) -> tuple[list[int], array[float], array[int], list[Sample | None]]:
         """
-        Return the live samples as numpy arrays, ascending by stamp (for the batch walk).
+        Return copies of the live samples' storage: stamps, values, parents and memos.
 
-        Kept until the next change (insert, prune, clear); treat them as read-only.  The
-        interval constants are the batch walk's slerp, pinned to :func:`math3d.slerp
-        <tf_demo.core.math3d.slerp>` by ``test/core/test_math3d_inlined.py``.
+        For the batch walk (:func:`tf_demo.core._batch.cache_arrays`), which keeps what it makes
+        of them in :attr:`arrays_memo`.
         """
-        cached = self._arrays
-        if cached is not None:
-            return cached
         start = self._start
-        stamps = np.array(self._stamps[start:], dtype=np.int64)
-        table = np.array(self._values[7 * start :], dtype=np.float64).reshape(-1, 7)
-        canonical_quat_batch(table[:, 3:], out=table[:, 3:])
-        for row, sample in enumerate(self._samples[start:]):
-            if sample is not None:  # stored as given (insert), or read already: the same bits
-                table[row] = sample[:7]
-        values = np.ascontiguousarray(table.T)
-        parents = np.array(self._parents[start:], dtype=np.int64)
-        count = stamps.shape[0]
-        intervals = np.empty((INTERVAL_COLUMNS, max(count - 1, 0)))
-        q0 = values[3:, :-1]
-        q1 = values[3:, 1:]
-        dot = np.einsum('ij,ij->j', q0, q1)
-        theta = np.arccos(np.minimum(np.abs(dot), 1.0))
-        intervals[0:3] = values[:3, :-1]
-        intervals[3:6] = values[:3, 1:] - values[:3, :-1]
-        intervals[6:10] = q0
-        intervals[10:14] = q1 * np.where(dot < 0, -1.0, 1.0)
-        intervals[14] = theta
-        with np.errstate(divide='ignore'):
-            intervals[15] = np.where(theta != 0.0, 1.0 / np.sin(theta), 0.0)
-        intervals[16] = np.diff(stamps).astype(np.float64)
-        intervals[17] = np.cos(theta) * intervals[15]
-        intervals[18:22] = intervals[10:14] * intervals[15] - q0 * intervals[17]
-        arrays = CacheArrays(
-            stamps,
-            values,
-            parents,
-            intervals,
-            bool((theta == 0.0).any()),
-            bool((parents[1:] != parents[:-1]).any()),
-            float(theta.max()) if theta.size else 0.0,
+        return (
+            self._stamps[start:],
+            self._values[7 * start :],
+            self._parents[start:],
+            self._samples[start:],
         )
-        self._arrays = arrays
-        return arrays
 
 
-class StaticCache:
+class StaticCache(Link):
     """A static link: one sample, valid at every time (tf2 StaticCache)."""
 
-    is_static: ClassVar[Literal[True]] = True
-
-    __slots__ = ('_sample', 'child_id', 'latest')
+    __slots__ = ('_sample',)
 
     def __init__(self, child_id: int = 0) -> None:
-        self.child_id = child_id
+        super().__init__(child_id, True)
         self._sample: Sample = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0)
-        #: ``(0, parent id)``: static links impose no time constraint.
-        self.latest: tuple[int, int] = (0, 0)
 
     def insert(self, stamp_ns: int, sample: Sample) -> bool:
         """Overwrite the stored sample (the stamp is ignored); always succeeds."""
@@ -612,6 +484,16 @@ class StaticCache:
 
     def clear(self) -> None:
         """Do nothing: tf2 keeps static transforms across ``clear()``."""
+
+    def covers(self, time_ns: int) -> bool:
+        """Return True: a static link has data at every time."""
+        del time_ns
+        return True
+
+    def sample_at_time(self, time_ns: int) -> Sample:
+        """Return the stored sample, whatever the time."""
+        del time_ns
+        return self._sample
 
     def get_data(self, time_ns: int) -> Sample:
         """Return the stored sample, whatever the time."""

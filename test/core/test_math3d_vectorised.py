@@ -13,14 +13,15 @@
 # limitations under the License.
 
 """
-The hot paths' inlined rotation math, pinned to :mod:`tf_demo.core.math3d` within 1e-12.
+The vectorised rotation math, pinned to :mod:`tf_demo.core.math3d`'s scalar functions within 1e-12.
 
-math3d is the one source of the rotation math. The lookup walk (``links.accumulate_links``) and
-the vectorised walk (``_batch`` with the interval constants of ``TimeCache.arrays``) inline
-lerp, slerp and composition for speed, and math3d itself has a fast route (``canonical_quat``
-computes only the matrix entries tf2 reads back, pinned bit for bit) and vectorised copies
-(``*_batch``); each test below names the copy it pins and compares it with the scalar original
-on drawn inputs (quaternions up to sign where the copy may flip it). Where a test builds the
+math3d is the one source of the rotation math; the lookup walk calls its functions.  The
+vectorised walk (``_batch`` with the interval constants of ``TimeCache.arrays``) does the same
+lerp, slerp and composition on numpy arrays, and math3d itself has a fast route
+(``canonical_quat`` computes only the matrix entries tf2 reads back, pinned bit for bit) and
+array versions (``*_batch``, ``*_lanes``); each test below names the array code it pins and
+compares it with the scalar original on drawn inputs (quaternions up to sign where the array
+code may flip it). Where a test builds the
 newer rotation from the older one, the angle between them is exactly 0 or at least 1e-6 rad:
 below about 1e-7 rad math3d's slerp (tf2's, which divides the dot product by the norms) may find
 a cosine of exactly 1 and return the older rotation while the walk (which skips that division)
@@ -37,7 +38,6 @@ import numpy as np
 import numpy.typing as npt
 import pytest
 from tf_demo.core import _batch
-from tf_demo.core import links
 from tf_demo.core import math3d
 from tf_demo.core.time_cache import StaticCache
 from tf_demo.core.time_cache import TimeCache
@@ -127,41 +127,6 @@ axes = (
 )
 
 
-# --- links.accumulate_links: the lookup walk -----------------------------------------------
-
-
-@given(moves, moves, spans, fractions)
-@example(((1.0, 2.0, 3.0), (0.0, 0.0, 0.0, 1.0)), ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)), 10, 0.3)
-@example(
-    ((0.0, 0.0, 0.0), (0.5, 0.5, 0.5, 0.5)), ((0.0, 0.0, 0.0), (-0.5, -0.5, -0.5, -0.5)), 10, 0.5
-)
-@tfst.profile_settings(200)
-def test_walk_interpolation_is_math3d_lerp_and_slerp(
-    first: Transform, second: Transform, span: int, fraction: float
-) -> None:
-    """Pins ``links.accumulate_links``'s inlined interpolate (lerp + slerp) to math3d."""
-    time_ns = _lane_time(span, fraction)
-    link = links.accumulate_links([_dynamic(first, second, span)], time_ns)
-    assert link is not None
-    t, q = _expected_link(first, second, (time_ns - T0) / span)
-    _assert_close(tuple(link[:3]), t, 'lerp')
-    _assert_same_rotation(tuple(link[3:]), q)
-
-
-@given(moves, moves, moves)
-@tfst.profile_settings(200)
-def test_walk_composition_is_math3d_compose(
-    bottom: Transform, middle: Transform, top: Transform
-) -> None:
-    """Pins ``links.accumulate_links``'s inlined ``link * acc`` to math3d.compose."""
-    acc = links.accumulate_links([_static(bottom, 1), _static(middle, 2), _static(top, 3)], 0)
-    assert acc is not None
-    t, q = math3d.compose(middle[0], middle[1], bottom[0], bottom[1])  # 3_T_1
-    t, q = math3d.compose(top[0], top[1], t, q)  # 4_T_1
-    _assert_close(tuple(acc[:3]), t, 'compose translation')
-    _assert_same_rotation(tuple(acc[3:]), q)
-
-
 # --- TimeCache.arrays + _batch._interpolate_rows: the vectorised slerp ------------------------
 
 
@@ -192,7 +157,7 @@ def test_batch_slerp_sine_branch_is_math3d_slerp(
     cache = _dynamic(first, second, span)
     far = math3d.quat_multiply(second[1], (1.0, 0.0, 0.0, 0.0))  # a half turn: angle pi/2
     cache.insert(T0 + 2 * span, (*second[0], *far, PARENT))
-    assert cache.arrays().max_theta > _batch._SQRT_COSINE_MAX_THETA
+    assert _batch.cache_arrays(cache).max_theta > _batch._SQRT_COSINE_MAX_THETA
     for ratio, row in _batch_links(cache, span, lane_fractions):
         t, q = _expected_link(first, second, ratio)
         _assert_close(tuple(row[:3]), t, 'lerp')
@@ -220,7 +185,7 @@ def test_batch_slerp_cosine_branch_is_math3d_slerp(
     translation, angle, axis, flip = turn
     second = (translation, _rotated(first[1], angle, axis, flip))
     cache = _dynamic(first, second, span)
-    assert cache.arrays().max_theta <= _batch._SQRT_COSINE_MAX_THETA
+    assert _batch.cache_arrays(cache).max_theta <= _batch._SQRT_COSINE_MAX_THETA
     for ratio, row in _batch_links(cache, span, lane_fractions):
         t, q = _expected_link(first, second, ratio)
         _assert_close(tuple(row[:3]), t, 'lerp')
