@@ -109,7 +109,7 @@ def cache_arrays(cache: TimeCache) -> CacheArrays:
     canonical_quat_batch(table[:, 3:], out=table[:, 3:])
     for row, sample in enumerate(samples):
         if sample is not None:  # stored as given (insert), or read already: the same bits
-            table[row] = sample[:7]
+            table[row] = sample.as_tuple()[:7]
     values = np.ascontiguousarray(table.T)
     parents = np.array(parent_array, dtype=np.int64)
     count = stamps.shape[0]

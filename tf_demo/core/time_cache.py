@@ -46,6 +46,7 @@ from bisect import bisect_left
 from bisect import bisect_right
 from struct import Struct
 from typing import Final
+from typing import final
 from typing import NamedTuple
 from typing import TYPE_CHECKING
 
@@ -67,6 +68,7 @@ __all__ = [
     'Link',
     'Sample',
     'StaticCache',
+    'StoredSample',
     'TimeCache',
     'TransformStorage',
     'display_time_point',
@@ -127,25 +129,44 @@ def _stored_sample(values: Sequence[float], parent_id: int) -> Sample:
     return (tx, ty, tz, qx, qy, qz, qw, parent_id)
 
 
-def _older_index(  # noqa: PLR0917 (hot path: positional arguments are fastest)
-    stamps: list[int], time_ns: int, start: int, end: int, earliest: int, latest: int
-) -> int:
-    """
-    Return the last index in ``[start, end)`` whose stamp is <= ``time_ns`` (interior times).
+@final
+class StoredSample:
+    """A :data:`Sample` kept by a cache once read: its fields are unboxed in the compiled build."""
 
-    Streams are usually evenly spaced, so a linear guess lands on the answer or next to it;
-    bisection only narrows what the guess missed.  The guess is made in doubles: products of
-    nanosecond stamps overflow the machine integers that compiled code computes with.
+    __slots__ = ('parent_id', 'qw', 'qx', 'qy', 'qz', 'tx', 'ty', 'tz')
+
+    def __init__(self, sample: Sample) -> None:
+        self.tx, self.ty, self.tz, self.qx, self.qy, self.qz, self.qw, self.parent_id = sample
+
+    def as_tuple(self) -> Sample:
+        """Return the sample as a tuple."""
+        return (self.tx, self.ty, self.tz, self.qx, self.qy, self.qz, self.qw, self.parent_id)
+
+
+def _interval(  # noqa: PLR0917 (hot path: positional arguments are fastest)
+    stamps: list[int], time_ns: int, start: int, end: int, earliest: int, latest: int
+) -> tuple[int, int, int]:
+    """
+    Return the interval of ``[start, end)`` that holds ``time_ns`` (an interior time).
+
+    ``(index, older stamp, newer stamp)``: the last index whose stamp is <= ``time_ns``, its
+    stamp and the next one.  Streams are usually evenly spaced, so a linear guess lands on the
+    answer or next to it; bisection only narrows what the guess missed.  The guess is made in
+    doubles: products of nanosecond stamps overflow the machine integers of compiled code.
     """
     guess = start + int(
         float(time_ns - earliest) * float(end - 1 - start) / float(latest - earliest)
     )
     guess = min(guess, end - 2)  # rounding, next to the newest stamp
-    if stamps[guess] <= time_ns:
-        if stamps[guess + 1] > time_ns:
-            return guess
-        return bisect_right(stamps, time_ns, guess + 1, end) - 1
-    return bisect_right(stamps, time_ns, start, guess) - 1
+    older = stamps[guess]
+    if older <= time_ns:
+        newer = stamps[guess + 1]
+        if newer > time_ns:
+            return guess, older, newer
+        index = bisect_right(stamps, time_ns, guess + 1, end) - 1
+    else:
+        index = bisect_right(stamps, time_ns, start, guess) - 1
+    return index, stamps[index], stamps[index + 1]
 
 
 class Link:
@@ -184,6 +205,8 @@ class TimeCache(Link):
 
     __slots__ = (
         '_max_storage_ns',
+        '_newest',
+        '_oldest',
         '_parents',
         '_samples',
         '_stamps',
@@ -203,8 +226,11 @@ class TimeCache(Link):
         #: Each sample as tf2 stores it, None until first read (:meth:`sample_at`).  This list
         #: may be shorter than the stamps: what is past its end is None too (an insert at the
         #: end does not touch it).
-        self._samples: list[Sample | None] = []
+        self._samples: list[StoredSample | None] = []
         self._start = 0
+        #: The oldest and newest live stamps (``1, 0`` when empty: no time lies between them).
+        self._oldest = 1
+        self._newest = 0
         #: What the batch walk made of the live samples (numpy arrays), None after any change.
         self.arrays_memo: object = None
 
@@ -238,13 +264,15 @@ class TimeCache(Link):
         start = self._start
         end = len(stamps)
         if start < end:
-            latest = stamps[end - 1]
+            latest = self._newest
             oldest_kept = latest - self._max_storage_ns
-            if stamps[start] < oldest_kept:
+            if self._oldest < oldest_kept:
                 start += 1  # a steady stream drops one sample per insert
                 if start < end and stamps[start] < oldest_kept:
                     start = bisect_left(stamps, oldest_kept, start, end)
                 self._start = start
+                if start < end:
+                    self._oldest = stamps[start]
                 if start > 32 and 4 * start > end:
                     del stamps[:start]
                     del self._values[: 7 * start]
@@ -263,7 +291,7 @@ class TimeCache(Link):
                     if sample is None:
                         sample = _stored_sample(unpack_values(values), parent_id)
                     while index >= start and stamps[index] == stamp_ns:
-                        if self.sample_at(index) == sample:
+                        if self._stored(index).as_tuple() == sample:
                             return True
                         index -= 1
         else:
@@ -273,17 +301,22 @@ class TimeCache(Link):
             self._values.frombytes(values)
             self._parents.append(parent_id)
             self.latest = (stamp_ns, parent_id)
+            self._newest = stamp_ns
+            if start == end:  # the only live sample (a prune may have dropped all others)
+                self._oldest = stamp_ns
             if sample is not None:
                 self._memos_up_to(position)
-                self._samples[position] = sample
+                self._samples[position] = StoredSample(sample)
             return True
         stamps.insert(position, stamp_ns)
         self._values[7 * position : 7 * position] = array('d', values)
         self._parents.insert(position, parent_id)
+        if position == start:
+            self._oldest = stamp_ns
         samples = self._samples
         if position < len(samples) or sample is not None:
             self._memos_up_to(position - 1)
-            samples.insert(position, sample)
+            samples.insert(position, None if sample is None else StoredSample(sample))
         return True
 
     def _memos_up_to(self, index: int) -> None:
@@ -300,6 +333,8 @@ class TimeCache(Link):
         self._parents = array('q')
         self._samples = []
         self._start = 0
+        self._oldest = 1
+        self._newest = 0
         self.arrays_memo = None
         self.latest = (0, 0)
 
@@ -314,24 +349,26 @@ class TimeCache(Link):
 
     def sample_at(self, index: int) -> Sample:
         """Return the sample at ``index`` of the storage as tf2 stores it (made once)."""
+        return self._stored(index).as_tuple()
+
+    def _stored(self, index: int) -> StoredSample:
+        """Return the sample at ``index`` of the storage, made (canonicalised) on first read."""
         samples = self._samples
         if index >= len(samples):
             self._memos_up_to(index)
-        sample = samples[index]
-        if sample is None:
+        stored = samples[index]
+        if stored is None:
             offset = 7 * index
-            sample = samples[index] = _stored_sample(
-                self._values[offset : offset + 7], self._parents[index]
+            stored = samples[index] = StoredSample(
+                _stored_sample(self._values[offset : offset + 7], self._parents[index])
             )
-        return sample
+        return stored
 
     def covers(self, time_ns: int) -> bool:
         """Return whether the cache has data at ``time_ns`` (0: the newest; tf2's findClosest)."""
-        stamps = self._stamps
-        start = self._start
-        if start == len(stamps):
+        if self._start == len(self._stamps):
             return False
-        return not time_ns or stamps[start] <= time_ns <= stamps[-1]
+        return not time_ns or self._oldest <= time_ns <= self._newest
 
     def sample_at_time(self, time_ns: int) -> Sample:
         """
@@ -344,25 +381,24 @@ class TimeCache(Link):
         """
         stamps = self._stamps
         last = len(stamps) - 1
-        latest = stamps[last]
+        latest = self._newest
         if time_ns == 0 or time_ns >= latest:
             return self.sample_at(last)
         start = self._start
-        earliest = stamps[start]
+        earliest = self._oldest
         if time_ns <= earliest:
             return self.sample_at(start)
-        index = _older_index(stamps, time_ns, start, last + 1, earliest, latest)
-        one = self.sample_at(index)
-        two = self.sample_at(index + 1)
-        tx0, ty0, tz0, x0, y0, z0, w0, parent = one
-        tx1, ty1, tz1, x1, y1, z1, w1, parent1 = two
-        if parent1 != parent:
-            return one
-        one_stamp = stamps[index]
-        ratio = float(time_ns - one_stamp) / float(stamps[index + 1] - one_stamp)
-        tx, ty, tz = lerp((tx0, ty0, tz0), (tx1, ty1, tz1), ratio)
-        x, y, z, w = slerp((x0, y0, z0, w0), (x1, y1, z1, w1), ratio)
-        return (tx, ty, tz, x, y, z, w, parent)
+        index, one_stamp, two_stamp = _interval(stamps, time_ns, start, last + 1, earliest, latest)
+        one = self._stored(index)
+        two = self._stored(index + 1)
+        if two.parent_id != one.parent_id:
+            return one.as_tuple()
+        ratio = float(time_ns - one_stamp) / float(two_stamp - one_stamp)
+        tx, ty, tz = lerp((one.tx, one.ty, one.tz), (two.tx, two.ty, two.tz), ratio)
+        x, y, z, w = slerp(
+            (one.qx, one.qy, one.qz, one.qw), (two.qx, two.qy, two.qz, two.qw), ratio
+        )
+        return (tx, ty, tz, x, y, z, w, one.parent_id)
 
     def get_parent(self, time_ns: int) -> int:
         """Return the parent id at ``time_ns`` (older neighbour's parent), or 0 on failure."""
@@ -379,7 +415,7 @@ class TimeCache(Link):
         earliest = stamps[start]
         if time_ns <= earliest:
             return self._parents[start] if time_ns == earliest else 0
-        return self._parents[_older_index(stamps, time_ns, start, end, earliest, latest)]
+        return self._parents[_interval(stamps, time_ns, start, end, earliest, latest)[0]]
 
     def explain_failure(self, time_ns: int) -> tuple[int, str]:
         """
@@ -444,7 +480,9 @@ class TimeCache(Link):
             for s in (self.sample_at(index),)
         ]
 
-    def live_storage(self) -> tuple[list[int], array[float], array[int], list[Sample | None]]:
+    def live_storage(
+        self,
+    ) -> tuple[list[int], array[float], array[int], list[StoredSample | None]]:
         """
         Return copies of the live samples' storage: stamps, values, parents and memos.
 
