@@ -18,10 +18,29 @@ from __future__ import annotations
 
 from collections.abc import Callable
 import json
+import os
 import resource
 import subprocess
 import sys
 import time
+
+
+def build_line() -> str:
+    """
+    Say which tf_demo this interpreter runs with this checkout first on the path (as the benches).
+
+    ``python -m tf_demo`` in a child: version, compiled or interpreted, Python.
+    """
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    paths = [root, *filter(None, [os.environ.get('PYTHONPATH')])]
+    done = subprocess.run(
+        [sys.executable, '-m', 'tf_demo'],
+        env={**os.environ, 'PYTHONPATH': os.pathsep.join(paths)},
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    return done.stdout.strip() or f'tf_demo not importable: {done.stderr.strip()[-200:]}'
 
 
 def cpu_seconds() -> float:

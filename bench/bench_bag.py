@@ -40,6 +40,8 @@ import time
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
+from _flow import build_line
+
 TARGET = 200_000
 SECOND = 1_000_000_000
 T0 = 1_700_000_000 * SECOND
@@ -120,6 +122,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument('--transforms', type=int, default=50)
     parser.add_argument('--stream-mb', type=int, nargs='*', default=[64, 256])
     options = parser.parse_args(argv)
+    print(f'tf_demo build: {build_line()}')
     from rosbags.rosbag2 import Reader
     from rosbags.typesys import get_typestore
     from rosbags.typesys import Stores

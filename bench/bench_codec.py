@@ -33,6 +33,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # tf_demo from 
 # The cyclonedds IdlStruct twins of the ROS types, shared with test/msgs.
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / 'test' / 'msgs'))
 
+from _flow import build_line
 from cyclonedds_reference_types import idl_tf_message
 from cyclonedds_reference_types import TFMessage_
 from tf_demo.msgs import cdr
@@ -70,6 +71,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--repeat', type=int, default=25, help='timed runs per case (default 25)')
     repeat = parser.parse_args().repeat
+    print(f'tf_demo build: {build_line()}')
     print(f'Python {sys.version.split()[0]}; CPU microseconds per message over {repeat} runs')
     print(
         f'{"case":34s} {"ours min":>9s} {"median":>8s} {"IdlStruct min":>14s} {"median":>8s}'

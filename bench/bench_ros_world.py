@@ -41,6 +41,7 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
+from _flow import build_line
 from _flow import FlowMeter
 from _flow import last_json
 from _flow import start_role
@@ -304,6 +305,8 @@ def main() -> None:
     except ImportError:
         sys.exit('bench_ros_world.py runs inside ROS 2 Jazzy: source /opt/ros/jazzy/setup.bash')
     os.environ['TF_DEMO_BACKEND'] = 'rclpy'
+    if args.role == 'main':
+        print(f'tf_demo build: {build_line()}')
     if args.role == 'publisher':
         run_publisher(args)
     elif args.role == 'listener':

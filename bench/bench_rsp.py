@@ -39,6 +39,7 @@ import time
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
+from _flow import build_line  # noqa: E402 (bench/ is on the path)
 from tf_demo.core.math3d import matrix_from_quat  # noqa: E402
 from tf_demo.msgs.cdr import TfMessageEncoder  # noqa: E402
 from tf_demo.nodes.robot_state_publisher import JointStateThrottle  # noqa: E402
@@ -300,6 +301,7 @@ def main() -> int:
         print(f'no {pr2_path}; pass --robots DIR')
         return 1
     pr2 = RobotModel.from_file(pr2_path)
+    print(f'tf_demo build: {build_line()}')
     print(
         f'load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (timings scale with it)'
     )

@@ -40,6 +40,8 @@ import time
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
+from _flow import build_line
+
 TIMEOUT_S = 30.0
 
 
@@ -144,6 +146,7 @@ def main() -> None:
     env['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
     if args.world == 'rclpy' and shutil.which('ros2') is None:
         sys.exit('--world rclpy runs inside a sourced ROS 2 Jazzy with the overlay built')
+    print(f'tf_demo build: {build_line()}')
     print(f'start-up of static_tf_pub, {args.world} world (domain {env["ROS_DOMAIN_ID"]})')
     command = publisher_command(args.world, via_ros2_run=False)
     target = 0.5 if args.world == 'dds' else None

@@ -42,6 +42,7 @@ import time
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
+from _flow import build_line
 from _flow import FlowMeter
 from _flow import last_json
 from _flow import start_role
@@ -309,6 +310,7 @@ def main() -> None:
     os.environ['TF_DEMO_BACKEND'] = 'dds'
     os.environ.pop('ROS_LOCALHOST_ONLY', None)
     env = dict(os.environ)
+    print(f'tf_demo build: {build_line()}')
     print(f'tf_demo DDS transport benchmark (domain {env["ROS_DOMAIN_ID"]}, loopback)')
     if args.only in (None, 'publish'):
         bench_publish_cost(env, 20000)

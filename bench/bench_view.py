@@ -41,6 +41,8 @@ import time
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
+from _flow import build_line
+
 CHAINS = 10
 CPU_TARGET = 0.30
 AGE = re.compile(r'(\d+\.\d+) s old')
@@ -117,6 +119,7 @@ def main(argv: list[str] | None = None) -> int:
     if options.publish:
         publish(options.frames, options.rate)
         return 0
+    print(f'tf_demo build: {build_line()}')
     env = dict(os.environ, ROS_DOMAIN_ID=os.environ.get('ROS_DOMAIN_ID', '97'))
     env.setdefault('ROS_AUTOMATIC_DISCOVERY_RANGE', 'LOCALHOST')
     code = 'import sys; from tf_demo.cli.tf_view import main; sys.exit(main())'
