@@ -197,7 +197,7 @@ setup(
     zip_safe=False,
     maintainer='The tf_demo Authors',
     maintainer_email='tf_demo@example.com',
-    description='A pure-Python tf2 that runs on rclpy or standalone over Cyclone DDS.',
+    description='A typed-Python tf2 (mypyc-compiled where it can be) on rclpy or standalone DDS.',
     license='Apache-2.0',
     entry_points={
         'console_scripts': (
