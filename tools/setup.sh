@@ -65,7 +65,14 @@ fi
 echo "== pip install -e .[dds,test,view,bag] colcon-common-extensions (mypyc compiles the hot modules)"
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" --upgrade pip
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" -e ".[dds,test,view,bag]" colcon-common-extensions
-echo "== $("$venv/bin/python" -m tf_demo)"
+build_line="$("$venv/bin/python" -m tf_demo)"
+echo "== $build_line"
+if [ "$job" = test ] && [[ "$build_line" != *", compiled ("* ]]; then
+  # gcc and python3-dev are installed above: a build that fell back to interpreted is a failure
+  # here (the suite would pass on the interpreted build and hide it).
+  echo "the install did not compile the hot modules: $build_line" >&2
+  exit 1
+fi
 
 if [ "$job" = demo ]; then
   export PATH="$venv/bin:$PATH"
@@ -158,7 +165,12 @@ if [ -f "$jazzy_setup" ]; then
     # The tests import the installed (compiled) package: colcon runs `python -m pytest` in the
     # source folder, whose tf_demo/ would otherwise come first on sys.path.
     export PYTHONSAFEPATH=1
-    (cd / && echo "== $(python -m tf_demo)")
+    ros_build_line="$(cd / && python -m tf_demo)"
+    echo "== $ros_build_line"
+    if [[ "$ros_build_line" != *", compiled ("* ]]; then
+      echo "colcon build did not compile the hot modules: $ros_build_line" >&2
+      exit 1
+    fi
     status=0
     python -m colcon test --base-paths "$here" --packages-select tf_demo \
       --return-code-on-test-failure \

@@ -90,8 +90,6 @@ _LOGGER = logging.getLogger('tf_demo.core')
 InsertTuple = tuple[str, str, SupportsInt, Sequence[float], Sequence[float]]
 #: :meth:`BufferCore.set_transform`'s arguments, in order.
 SetTransformArguments = tuple[str, str, SupportsInt, Sequence[float], Sequence[float], str, bool]
-_canonical_quat = math3d.canonical_quat
-_new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 #: Lanes per pass of :meth:`BufferCore.lookup_transforms`.
 _BATCH_CHUNK = 4096
 #: The identity, shared: ``lookup_transform`` tests ``q is _IDENTITY_Q`` to skip canonicalising.
@@ -313,7 +311,7 @@ class BufferCore(FrameTree):
             parent = parent[1:]
         if child and child[0] == '/':
             child = child[1:]
-        rx, ry, rz, rw = _canonical_quat((x, y, z, w))
+        rx, ry, rz, rw = math3d.canonical_quat((x, y, z, w))
         total = tx + ty + tz + rx + ry + rz + rw  # NaN if any value is NaN (or inf - inf)
         if (
             child == parent or not child or not parent or total != total  # noqa: PLR0124
@@ -504,11 +502,12 @@ class BufferCore(FrameTree):
         finally:
             lock.release()
         if values is IDENTITY:
-            return _new_tuple(TransformResult, (_IDENTITY_T, _IDENTITY_Q, stamp))
+            # tuple.__new__: the NamedTuple without its Python-level __new__ (a Python call).
+            return tuple.__new__(TransformResult, (_IDENTITY_T, _IDENTITY_Q, stamp))
         # ROS 2 stores the result in a tf2::Transform (a matrix) and reads the quaternion back.
         tx, ty, tz, qx, qy, qz, qw = values
-        q = _canonical_quat((qx, qy, qz, qw))
-        return _new_tuple(TransformResult, ((tx, ty, tz), q, stamp))  # TransformResult(...)
+        q = math3d.canonical_quat((qx, qy, qz, qw))
+        return tuple.__new__(TransformResult, ((tx, ty, tz), q, stamp))
 
     def lookup_transform_full(
         self, target: str, target_time_ns: int, source: str, source_time_ns: int, fixed: str
