@@ -102,7 +102,8 @@ def _patched_xacro(package_paths: Sequence[str | Path] | None) -> Iterator[None]
 
     def parse(inp: object, filename: str | None = None) -> object:
         if inp is None and filename is not None:
-            path = os.path.join(xacro.root_dir, filename)
+            # xacro's --root-dir (2.0.11 on); before it, files open from the working directory.
+            path = os.path.join(getattr(xacro, 'root_dir', os.curdir), filename)
             if os.path.lexists(path):  # a missing file keeps xacro's own error (optional includes)
                 try:
                     inp = io.BytesIO(read_bytes_file(path))
