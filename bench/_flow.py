@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+import importlib.util
 import json
 import os
 import resource
@@ -27,11 +28,14 @@ import time
 
 def build_line() -> str:
     """
-    Say which tf_demo this interpreter runs with this checkout first on the path (as the benches).
+    Say which tf_demo this process imports: ``python -m tf_demo`` in a child with its folder.
 
-    ``python -m tf_demo`` in a child: version, compiled or interpreted, Python.
+    Version, compiled or interpreted, Python.
     """
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    spec = importlib.util.find_spec('tf_demo')
+    if spec is None or spec.origin is None:
+        return 'tf_demo is not importable here'
+    root = os.path.dirname(os.path.dirname(spec.origin))
     paths = [root, *filter(None, [os.environ.get('PYTHONPATH')])]
     done = subprocess.run(
         [sys.executable, '-m', 'tf_demo'],

@@ -18,10 +18,10 @@ tf_demo inside a real ROS 2 Jazzy against the real tf2_ros, measured in the same
 1. ``tf_demo.ros.Buffer`` vs ``tf2_ros.Buffer`` on the same REP-105 tree, rclpy messages in and
    out: ``lookup_transform('map', 'camera_link', t)`` at a new interior stamp per call, at
    ``Time()`` (latest), ``can_transform``, and ``set_transform(TransformStamped)``; the median of
-   per-round ratios ours/tf2_ros (targets <= 0.5, 0.5, 0.5 and 0.8).
+   per-round ratios ours/tf2_ros (targets <= 0.35, 0.5, 0.5 and 0.8).
 2. A listener process ingesting 1,000 msg/s x 50 transforms that another process publishes for
    ``--seconds`` (default 10): messages lost (target 0) and the listener process' CPU, our
-   TransformListener vs tf2_ros's in the same run (target: ours <= 0.4x of theirs).
+   TransformListener vs tf2_ros's in the same run (target: ours <= 0.2x of theirs).
 
 Run inside a sourced Jazzy: ``python bench/bench_ros_world.py [--seconds 10] [--rounds 7]``.
 Uses ``ROS_DOMAIN_ID`` if set (else 232), loopback only.
@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Callable
+import importlib.util
 import json
 import os
 from pathlib import Path
@@ -39,7 +40,9 @@ import sys
 import time
 from typing import Any
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+# tf_demo as the sourced overlay installed it (colcon build compiles it), else this checkout.
+if importlib.util.find_spec('tf_demo') is None:
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from _flow import build_line
 from _flow import FlowMeter
@@ -122,7 +125,7 @@ def bench_buffers(rounds: int, calls: int) -> None:
         }
 
     targets = {
-        "lookup_transform('map', 'camera_link', t)": 0.5,
+        "lookup_transform('map', 'camera_link', t)": 0.35,
         'lookup_transform at Time() (latest)': 0.5,
         'can_transform': 0.5,
         'set_transform(TransformStamped)': 0.8,
@@ -274,8 +277,8 @@ def bench_ingest(seconds: float) -> None:
     ours_cpu = results['ours'].get('cpu_s', 0.0)
     their_cpu = results['tf2_ros'].get('cpu_s', 0.0) or float('nan')
     ratio = ours_cpu / their_cpu
-    verdict = 'ok' if ratio <= 0.4 else 'MISSED'
-    print(f'listener CPU ours/tf2_ros: {ratio:.2f} (target <= 0.4) {verdict}')
+    verdict = 'ok' if ratio <= 0.2 else 'MISSED'
+    print(f'listener CPU ours/tf2_ros: {ratio:.2f} (target <= 0.2) {verdict}')
     # A listener that cannot keep up spends its CPU on fewer messages: per message as well.
     per_message = {
         impl: result.get('cpu_s', 0.0) / max(1.0, result.get('received', 0.0))
