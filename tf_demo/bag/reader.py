@@ -275,16 +275,13 @@ def load_bag(
     with open_tf_bag(path, tf_topic, static_topic) as bag:
         span = bag.end_ns - bag.start_ns + _CACHE_MARGIN_NS
         core = BufferCore(cache_time_ns if cache_time_ns is not None else span, log=_quiet)
-        insert = core.set_transform
+        insert = core.set_transforms
         authority = f'bag {bag.path.name}'
 
         def insert_all(record: BagRecord) -> None:
-            for parent, child, stamp_ns, translation, rotation in record.transforms:
-                try:
-                    insert(parent, child, stamp_ns, translation, rotation, authority,
-                           record.is_static)  # fmt: skip
-                except Exception:
-                    continue
+            # One compiled call a message, as the listener inserts; a transform the core
+            # refuses is logged (quietly) or returned as a failure, and the rest go in.
+            insert(record.transforms, authority, record.is_static)
 
         end_ns, damage = bag.read(insert_all)
         return LoadedBag(core, bag.start_ns, end_ns, damage)

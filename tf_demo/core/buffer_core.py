@@ -548,7 +548,9 @@ class BufferCore(FrameTree):
         if target == source:
             return ''
         ids = self._ids
-        with self._lock:
+        lock = self._lock
+        lock.acquire()  # as lookup_transform: fewer calls than ``with`` (a hot path)
+        try:
             # Interned names never start with '/' except '//x' -> '/x', which tf2 refuses here.
             target_id = ids.get(target, 0)
             source_id = ids.get(source, 0)
@@ -561,6 +563,8 @@ class BufferCore(FrameTree):
                 )
                 if source_id:
                     text = self._can_walk(target_id, source_id, time_ns) or ''
+        finally:
+            lock.release()
         return text
 
     def can_transform_full(
