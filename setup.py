@@ -117,6 +117,8 @@ class BuildExt(build_ext):
         super().finalize_options()
 
     def run(self) -> None:
+        if self.inplace:
+            _remove_stray_extensions()
         if self._interpreted is not None:
             _say(f'installing interpreted: {self._interpreted}')
             return
@@ -135,6 +137,16 @@ class BuildExt(build_ext):
             if os.path.exists(path):
                 os.utime(path)
         _say(f'compiled {len(BUILD_INFO["COMPILED_MODULES"])} modules with mypyc')
+
+
+def _remove_stray_extensions() -> None:
+    """Delete in-place extensions of modules no longer compiled (they would shadow the source)."""
+    compiled = {name.replace('.', os.sep) for name in BUILD_INFO['COMPILED_MODULES']}
+    for path in glob(os.path.join(HERE, 'tf_demo', '**', '*.*.so'), recursive=True):
+        module = os.path.relpath(path, HERE).split('.', 1)[0]
+        if module not in compiled and not module.endswith('__mypyc'):
+            os.remove(path)
+            _say(f'removed {os.path.relpath(path, HERE)}: that module is no longer compiled')
 
 
 def _ext_modules() -> list[Extension]:
