@@ -39,6 +39,12 @@ def test_echo_usage_and_rate_exit_codes(spawn):
     """Wrong counts print the usage (exit 1); bad rates exit 2 and 3 with upstream's message."""
     code, out, _ = run(spawn, 'tf_echo', 'only_one')
     assert (code, out) == (1, ECHO_USAGE)
+    for flag in ('--help', '-h'):  # upstream's usage, then our flags (exit 1 as the usage)
+        code, out, err = run(spawn, 'tf_echo', flag)
+        assert (code, err) == (1, '')
+        assert out.startswith(ECHO_USAGE)
+        for extra in ('--precision N', '--limit N', '--json', '--bag PATH', '--at T'):
+            assert f' {extra} ' in out
     code, _, err = run(spawn, 'tf_echo', 'a', 'b', 'x')
     assert code == 2
     assert err == "Failed to convert rate argument 'x' to a floating-point number\n"

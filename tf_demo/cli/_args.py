@@ -224,6 +224,8 @@ class EchoArgs:
     exit_code: int = 0
     error: str = ''
     show_usage: bool = False
+    #: ``-h``/``--help``: the usage with tf_demo's additions (exit code 1, as tf2_echo's usage).
+    show_help: bool = False
 
 
 ECHO_EXTRA_FLAGS = ('-p', '--precision', '--limit', '--json', '--bag', '--at')
@@ -247,6 +249,10 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
         token = args[index]
         if token == '--json':
             result.json = True
+        elif token in ('-h', '--help'):
+            result.show_help = result.show_usage = True
+            result.exit_code = 1
+            return result
         elif token in ('--bag', '--at'):
             if index == len(args) - 1:
                 result.error = f'{token} needs a value'

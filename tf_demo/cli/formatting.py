@@ -52,6 +52,11 @@ ECHO_EXTRAS_USAGE = (
     '  -p, --precision N   decimals to print (default 3)\n'
     '  --limit N           exit after N transforms were printed\n'
     '  --json              print one JSON object per line instead of the text block\n'
+    '  --bag PATH          echo from a rosbag2 recording (a folder, .mcap or .db3) instead\n'
+    '  --at T              with --bag: only the instant T (seconds from the bag start, or\n'
+    '                      absolute seconds)\n'
+    '  -h, --help          this text (a wrong argument count prints the first part only, as\n'
+    '                      tf2_echo does)\n'
 )
 
 

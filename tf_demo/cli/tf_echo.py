@@ -41,6 +41,7 @@ from tf_demo.cli._args import EchoArgs
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import run_tool
+from tf_demo.cli.formatting import ECHO_EXTRAS_USAGE
 from tf_demo.cli.formatting import ECHO_USAGE
 from tf_demo.cli.formatting import format_echo_failure
 from tf_demo.cli.formatting import format_echo_failure_json
@@ -179,7 +180,9 @@ def main(args: list[str] | None = None) -> int:
     tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
     options = parse_echo_args(tool_args)
     if options.show_usage:
-        _write(ECHO_USAGE)  # upstream's usage only: stderr stays empty, as tf2_echo's
+        # A wrong count gets upstream's usage only (stderr stays empty, as tf2_echo's); --help
+        # adds tf_demo's flags.
+        _write(ECHO_USAGE + (ECHO_EXTRAS_USAGE if options.show_help else ''))
         return options.exit_code
     if options.error:
         print(options.error, file=sys.stderr, flush=True)
