@@ -113,6 +113,28 @@ def test_a_source_edited_after_the_build_runs_interpreted_with_a_warning(tmp_pat
     assert 'RuntimeWarning' in done.stderr
 
 
+@needs_compiled
+def test_an_extension_left_beside_a_module_that_is_not_compiled_is_not_used(
+    tmp_path: Path,
+) -> None:
+    """A colcon install folder keeps extensions a newer build no longer makes: sources win."""
+    copy = tmp_path / 'tf_demo'
+    shutil.copytree(PACKAGE_ROOT / 'tf_demo', copy, ignore=shutil.ignore_patterns('__pycache__'))
+    suffix = EXTENSION_SUFFIXES[0]
+    stray = copy / 'core' / f'files{suffix}'  # tf_demo.core.files is not compiled
+    shutil.copy2(copy / 'core' / f'links{suffix}', stray)
+    env = dict(os.environ, PYTHONPATH=str(tmp_path))
+    env.pop(build_info.INTERPRETED_ENVIRONMENT_VARIABLE, None)
+    code = 'import tf_demo.core.files as f, tf_demo.core.links as l; print(f.__file__, l.__file__)'
+    done = run_captured([sys.executable, '-c', code], env, cwd=Path('/'))
+    assert done.returncode == 0, done.stderr
+    files, links = done.stdout.split()
+    assert files == str(copy / 'core' / 'files.py')
+    # compiled; a module mypyc's group library initialises itself gets a __file__ one tf_demo/
+    # too deep (placed from the library's folder), hence only the end
+    assert links.endswith(f'/core/links{suffix}')
+
+
 def test_python_m_tf_demo_says_version_build_and_python() -> None:
     out, _ = _python('import runpy; runpy.run_module("tf_demo", run_name="__main__")')
     assert out.startswith('tf_demo ')

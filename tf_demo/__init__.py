@@ -17,7 +17,8 @@ tf_demo: tf2 in typed Python for ROS 2 Jazzy and the standalone world.
 
 Its hot modules are compiled by mypyc where the install could (:mod:`tf_demo.build_info` says
 which build runs); ``TF_DEMO_INTERPRETED=1`` in the environment runs the Python source instead,
-and so does an editable install whose sources changed after the build (with a warning).
+and so does an editable install whose sources changed after the build (with a warning).  A C
+extension left beside a module that is not compiled (an older install's) is never imported.
 """
 
 import os as _os
@@ -25,6 +26,7 @@ import warnings as _warnings
 
 from tf_demo import build_info as _build_info
 
+_build_info.guard_sources()
 if _os.environ.get(_build_info.INTERPRETED_ENVIRONMENT_VARIABLE, '') not in ('', '0'):
     _build_info.prefer_sources()
 elif _stale := _build_info.stale_modules():

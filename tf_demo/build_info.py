@@ -41,6 +41,7 @@ __all__ = [
     'build_name',
     'compiled_modules',
     'describe',
+    'guard_sources',
     'prefer_sources',
     'stale_modules',
     'version_line',
@@ -79,7 +80,7 @@ def _files(name: str) -> tuple[str, str | None]:
 
 
 def _sources_preferred() -> bool:
-    return any(isinstance(finder, _SourcesFirst) for finder in sys.meta_path)
+    return any(isinstance(f, _SourcesFirst) and f.all_modules for f in sys.meta_path)
 
 
 def compiled_modules() -> list[str]:
@@ -149,13 +150,25 @@ def describe() -> str:
 
 
 class _SourcesFirst(importlib.abc.MetaPathFinder):
-    """Finds the ``.py`` file of a compiled module before its C extension."""
+    """
+    Finds a tf_demo module's ``.py`` file before a C extension of the same name.
+
+    For every module but the compiled ones, unless :attr:`all_modules`: an extension beside a
+    module that is not compiled is left over from an older install (a colcon install folder
+    keeps files a newer build no longer makes) and must not shadow the source.
+    """
+
+    def __init__(self) -> None:
+        #: The compiled modules from their sources too (the interpreted build).
+        self.all_modules = False
 
     def find_spec(
         self, fullname: str, path: Sequence[str] | None, target: ModuleType | None = None
     ) -> importlib.machinery.ModuleSpec | None:
         del target
-        if fullname not in COMPILED_MODULES or not path:
+        if not path or not fullname.startswith('tf_demo.'):
+            return None
+        if fullname in COMPILED_MODULES and not self.all_modules:
             return None
         base = fullname.rpartition('.')[2] + '.py'
         for folder in path:
@@ -165,7 +178,21 @@ class _SourcesFirst(importlib.abc.MetaPathFinder):
         return None
 
 
+def _finder() -> _SourcesFirst:
+    """Return the finder of :func:`guard_sources` (installing it first on ``sys.meta_path``)."""
+    for finder in sys.meta_path:
+        if isinstance(finder, _SourcesFirst):
+            return finder
+    finder = _SourcesFirst()
+    sys.meta_path.insert(0, finder)
+    return finder
+
+
+def guard_sources() -> None:
+    """Import every module that is not compiled from its source (tf_demo does on import)."""
+    _finder()
+
+
 def prefer_sources() -> None:
     """Import the hot modules from their Python source from now on (the interpreted build)."""
-    if not _sources_preferred():
-        sys.meta_path.insert(0, _SourcesFirst())
+    _finder().all_modules = True
