@@ -125,7 +125,10 @@ def stale_modules() -> list[str]:
 
 def build_name() -> str:
     """Return ``'compiled'``, ``'interpreted'`` or ``'partly compiled'``."""
-    count = len(compiled_modules())
+    return _build_name(len(compiled_modules()))
+
+
+def _build_name(count: int) -> str:
     if count == len(COMPILED_MODULES):
         return 'compiled'
     return 'partly compiled' if count else 'interpreted'
@@ -146,7 +149,7 @@ def version_line() -> str:
 def describe() -> str:
     """Return one line saying which build runs, e.g. ``compiled (mypyc: 8 of 8 hot modules)``."""
     count = len(compiled_modules())
-    return f'{build_name()} (mypyc: {count} of {len(COMPILED_MODULES)} hot modules)'
+    return f'{_build_name(count)} (mypyc: {count} of {len(COMPILED_MODULES)} hot modules)'
 
 
 class _SourcesFirst(importlib.abc.MetaPathFinder):

@@ -456,12 +456,12 @@ class TimeCache(Link):
     @property
     def latest_stamp_ns(self) -> int:
         """Newest stamp, 0 when empty."""
-        return self._stamps[-1] if self._start < len(self._stamps) else 0
+        return self._newest if self._start < len(self._stamps) else 0
 
     @property
     def oldest_stamp_ns(self) -> int:
         """Oldest stamp still held, 0 when empty."""
-        return self._stamps[self._start] if self._start < len(self._stamps) else 0
+        return self._oldest if self._start < len(self._stamps) else 0
 
     def __len__(self) -> int:
         return len(self._stamps) - self._start
