@@ -31,6 +31,9 @@ publishes its nodes on ``ros_discovery_info`` so that ``ros2 node list`` shows t
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+import threading
+
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
 from tf_demo.transport.dds.callback_groups import ReentrantCallbackGroup
@@ -76,6 +79,7 @@ __all__ = [
     'expand_topic_name',
     'init',
     'ok',
+    'serve_subscriptions',
     'shutdown',
     'spin',
     'spin_once',
@@ -84,3 +88,22 @@ __all__ = [
     'validate_namespace',
     'validate_node_name',
 ]
+
+
+def serve_subscriptions(
+    node: DdsNode, subscriptions: Sequence[DdsSubscription], stop: threading.Event, period_s: float
+) -> None:
+    """
+    Run the callbacks of ``node`` (which holds ``subscriptions``) until ``stop`` or shutdown.
+
+    The standalone executor already waits on the read conditions directly: a private
+    :class:`SingleThreadedExecutor`, ``stop`` checked every ``period_s``.
+    """
+    del subscriptions  # the node's executor serves them all
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    try:
+        while not stop.is_set() and ok():
+            executor.spin_once(timeout_sec=period_s)
+    finally:
+        executor.shutdown()
