@@ -50,6 +50,7 @@ from typing import IO
 from typing import TYPE_CHECKING
 
 from tf_demo.core.exceptions import TransformException
+from tf_demo.core.python_child import python_child_command
 from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.msgs.convert import TransformStampedLike
 from tf_demo.transport.ros_args import split_ros_args
@@ -170,7 +171,7 @@ class Child:
 def child_command(module: str, *args: str) -> list[str]:
     """Command line running ``module``'s ``main()`` with this interpreter."""
     code = f'import sys; from {module} import main; sys.exit(main())'
-    return [sys.executable, '-c', code, *args]
+    return python_child_command(code, *args)
 
 
 def prefixed(name: str, line: str) -> str:
