@@ -50,6 +50,7 @@ from typing import IO
 from typing import TYPE_CHECKING
 
 from tf_demo.core.exceptions import TransformException
+from tf_demo.core.extras import extra_hint
 from tf_demo.core.python_child import python_child_command
 from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.msgs.convert import TransformStampedLike
@@ -240,7 +241,7 @@ def start_children(options: argparse.Namespace, children: list[Child]) -> None:
         if importlib.util.find_spec('viser') is None:
             print(
                 "tf_demo_live: tf_view not started: install the 'view' extra "
-                "(pip install 'tf_demo[view]') for the 3D view in the browser",
+                f'({extra_hint("view")}) for the 3D view in the browser',
                 flush=True,
             )
             return

@@ -42,6 +42,7 @@ from tf_demo.cli._plot_model import sample_times
 from tf_demo.cli._plot_model import sample_track
 from tf_demo.cli._plot_model import Track
 from tf_demo.core.buffer_core import BufferCore
+from tf_demo.core.extras import extra_hint
 from tf_demo.core.files import output_path_error
 from tf_demo.core.files import OutputFileError
 from tf_demo.core.files import write_bytes_atomically
@@ -136,7 +137,7 @@ def _require_matplotlib() -> None:
     try:
         import matplotlib  # noqa: F401 (only whether it is there)
     except ImportError as error:
-        msg = f"plotting needs matplotlib (pip install 'tf_demo[bag]'): {error}"
+        msg = f"plotting needs matplotlib, of the 'bag' extra ({extra_hint('bag')}): {error}"
         raise ToolError(msg) from None
 
 
