@@ -38,6 +38,8 @@ from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
 from tf_demo.cli._observations import buffer_from_observations
+from tf_demo.cli._plot_model import live_span
+from tf_demo.cli._plot_model import old_stamps_hint
 from tf_demo.cli._plot_model import sample_times
 from tf_demo.cli._plot_model import sample_track
 from tf_demo.cli._plot_model import Track
@@ -127,10 +129,14 @@ def _plot_live(options: argparse.Namespace) -> int:
         observations = recorder.observations()
     finally:
         node.destroy_node()
+    start_ns, end_ns = live_span(start_ns, end_ns, [o.receive_ns for o in observations])
     cache_ns = end_ns - start_ns + _CACHE_MARGIN_NS
     core = buffer_from_observations(observations, cache_time_ns=cache_ns)
     track = _track(core, options, start_ns, end_ns)
-    return _write_plot(track, options.output, f'live, {len(observations)} messages')
+    code = _write_plot(track, options.output, f'live, {len(observations)} messages')
+    if (hint := old_stamps_hint(track)) is not None:
+        print(f'{TOOL}: hint: {hint}', flush=True)
+    return code
 
 
 def _require_matplotlib() -> None:
