@@ -119,6 +119,21 @@ def import_rclpy_submodules() -> None:
         importlib.import_module(f'{__name__}.{name}')
 
 
+def _take_back_an_ignored_sigint() -> None:
+    """
+    Make SIGINT raise ``KeyboardInterrupt`` even when the process inherited it ignored.
+
+    A node started with ``&`` from a non-interactive shell starts with SIGINT ignored, and
+    Python then installs no handler; rclpy's ``init`` installs its own regardless, so
+    ``kill -INT`` stops an rclpy node: the standalone world does the same.
+    """
+    if (
+        threading.current_thread() is threading.main_thread()
+        and signal.getsignal(signal.SIGINT) == signal.SIG_IGN
+    ):
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
 def init(args: Sequence[str] | None = None) -> None:
     """
     Initialise the backend with the process arguments (``sys.argv`` when None).
@@ -129,6 +144,7 @@ def init(args: Sequence[str] | None = None) -> None:
     """
     argv = list(sys.argv if args is None else args)
     if backend_name() == 'dds':
+        _take_back_an_ignored_sigint()
         from tf_demo.transport import logging as node_logging
 
         for logger_name, level in parse_ros_args(argv).log_levels:
