@@ -38,7 +38,7 @@ from tf_demo.core.python_child import python_child_command
 
 def console_script(code: str) -> list[str]:
     """Run ``code`` as an installed console script would: the working directory not on the path."""
-    return [sys.executable, '-c', f"import sys; sys.path.remove('')\n{code}"]
+    return [sys.executable, '-c', f'import sys; sys.path[:] = [p for p in sys.path if p]\n{code}']
 
 
 @pytest.fixture
