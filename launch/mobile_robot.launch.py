@@ -20,7 +20,8 @@ and camera) from the xacro, joint_state_publisher feeds it the wheel joints (it 
 from ``robot_description``), and dynamic_tf_pub moves odom -> base_footprint on a circle (a
 stand-in for odometry).
 
-    ros2 launch tf_demo mobile_robot.launch.py [viewer:=rviz|web|none] [radius:=1.0]
+    ros2 launch tf_demo mobile_robot.launch.py [viewer:=rviz|web|none] [rviz:=true|false]
+        [radius:=1.0]
 """
 
 import os
@@ -45,7 +46,7 @@ def generate_launch_description() -> LaunchDescription:
     robot_description = ParameterValue(Command(['xacro ', xacro_file]), value_type=str)
     return LaunchDescription(
         [
-            viewer_argument(),
+            *viewer_argument(),
             radius_argument(),
             tf_demo_node(
                 executable='robot_state_publisher',

@@ -19,7 +19,7 @@ map -> odom is a static identity (stand-in for localisation), odom -> base_footp
 circle (stand-in for odometry) and the robot's static frames come from
 ``config/rep105_static_transforms.yaml``.
 
-    ros2 launch tf_demo rep105.launch.py [viewer:=rviz|web|none]
+    ros2 launch tf_demo rep105.launch.py [viewer:=rviz|web|none] [rviz:=true|false]
 """
 
 import os
@@ -37,7 +37,7 @@ from tf_demo_launch import viewer_argument
 def generate_launch_description() -> LaunchDescription:
     return LaunchDescription(
         [
-            viewer_argument(),
+            *viewer_argument(),
             tf_demo_node(
                 executable='static_tf_pub',
                 name='robot_static_frames',

@@ -16,7 +16,7 @@
 The course demo: static base_link -> camera_link, moving odom -> base_link, and a viewer
 (rviz2, or tf_view in the browser).
 
-    ros2 launch tf_demo tf_demo.launch.py [viewer:=rviz|web|none] [radius:=2.0]
+    ros2 launch tf_demo tf_demo.launch.py [viewer:=rviz|web|none] [rviz:=true|false] [radius:=2.0]
 """
 
 import os
@@ -36,7 +36,7 @@ from tf_demo_launch import viewer_argument
 def generate_launch_description() -> LaunchDescription:
     return LaunchDescription(
         [
-            viewer_argument(),
+            *viewer_argument(),
             radius_argument(),
             tf_demo_node(executable='static_tf_pub', name='static_tf_pub'),
             tf_demo_node(

@@ -24,8 +24,8 @@ import os
 from ament_index_python.packages import get_package_share_directory
 from ament_index_python.packages import PackageNotFoundError
 from launch.actions import DeclareLaunchArgument
-from launch.conditions import IfCondition
-from launch.substitutions import EqualsSubstitution
+from launch.actions import OpaqueFunction
+from launch.launch_context import LaunchContext
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
 
@@ -45,17 +45,41 @@ def rviz_installed() -> bool:
 
 
 VIEWERS = ('rviz', 'web', 'none')
+#: The course launch's switch (``rviz:=true|false``); ``auto`` when not given.
+RVIZ_SWITCH = ('true', 'false', 'auto')
 
 
-def viewer_argument() -> DeclareLaunchArgument:
-    """``viewer:=rviz|web|none``: rviz2 where it is installed, else tf_view in the browser."""
-    return DeclareLaunchArgument(
-        'viewer',
-        default_value='rviz' if rviz_installed() else 'web',
-        choices=list(VIEWERS),
-        description='rviz: rviz2; web: tf_view, a 3D view in the browser; none: no viewer '
-        '(default: rviz where rviz2 is installed, else web)',
-    )
+def viewer_argument() -> list[DeclareLaunchArgument]:
+    """
+    ``viewer:=rviz|web|none`` and the course's ``rviz:=true|false`` (true: rviz, false: none).
+
+    ``viewer:=`` wins when both are given; with neither, rviz2 where it is installed, else
+    tf_view in the browser (:func:`chosen_viewer`).
+    """
+    return [
+        DeclareLaunchArgument(
+            'viewer',
+            default_value='auto',
+            choices=['auto', *VIEWERS],
+            description='rviz: rviz2; web: tf_view, a 3D view in the browser; none: no viewer '
+            '(auto: as rviz:= says, else rviz where rviz2 is installed, else web)',
+        ),
+        DeclareLaunchArgument(
+            'rviz',
+            default_value='auto',
+            choices=list(RVIZ_SWITCH),
+            description="the course launch's switch: true is viewer:=rviz, false viewer:=none",
+        ),
+    ]
+
+
+def chosen_viewer(viewer: str, rviz: str, rviz_is_installed: bool) -> str:
+    """The viewer to start from ``viewer:=`` and ``rviz:=`` (both ``auto`` when not given)."""
+    if viewer != 'auto':
+        return viewer
+    if rviz != 'auto':
+        return 'rviz' if rviz == 'true' else 'none'
+    return 'rviz' if rviz_is_installed else 'web'
 
 
 def radius_argument() -> DeclareLaunchArgument:
@@ -76,33 +100,40 @@ def tf_demo_node(*, executable: str, name: str, **parameters: object) -> Node:
     )
 
 
-def viewer(fixed_frame: str, *rviz_arguments: str) -> list[Node]:
+def viewer(fixed_frame: str, *rviz_arguments: str) -> list[OpaqueFunction]:
     """
-    The chosen viewer on ``fixed_frame``: rviz2 on tf_demo's configuration (``rviz_arguments``
-    added) when ``viewer:=rviz``, tf_view (which prints its URL) when ``viewer:=web``.
+    The chosen viewer on ``fixed_frame`` (:func:`chosen_viewer`): rviz2 on tf_demo's
+    configuration (``rviz_arguments`` added), tf_view (which prints its URL; where the ``view``
+    extra is missing it says so in one line and the launch goes on without it), or none.
     """
-    chosen = LaunchConfiguration('viewer')
-    return [
-        Node(
-            package='rviz2',
-            executable='rviz2',
-            name='rviz2',
-            arguments=[
-                '-d',
-                share_path('config', 'tf_demo.rviz'),
-                '-f',
-                fixed_frame,
-                *rviz_arguments,
-            ],
-            condition=IfCondition(EqualsSubstitution(chosen, 'rviz')),
-            output='screen',
-        ),
-        Node(
-            package='tf_demo',
-            executable='tf_view',
-            name='tf_view',
-            arguments=['--fixed-frame', fixed_frame],
-            condition=IfCondition(EqualsSubstitution(chosen, 'web')),
-            output='screen',
-        ),
-    ]
+
+    def nodes(context: LaunchContext) -> list[Node]:
+        chosen = chosen_viewer(
+            LaunchConfiguration('viewer').perform(context),
+            LaunchConfiguration('rviz').perform(context),
+            rviz_installed(),
+        )
+        if chosen == 'rviz':
+            arguments = ['-d', share_path('config', 'tf_demo.rviz'), '-f', fixed_frame]
+            return [
+                Node(
+                    package='rviz2',
+                    executable='rviz2',
+                    name='rviz2',
+                    arguments=[*arguments, *rviz_arguments],
+                    output='screen',
+                )
+            ]
+        if chosen == 'web':
+            return [
+                Node(
+                    package='tf_demo',
+                    executable='tf_view',
+                    name='tf_view',
+                    arguments=['--fixed-frame', fixed_frame, '--optional'],
+                    output='screen',
+                )
+            ]
+        return []
+
+    return [OpaqueFunction(function=nodes)]

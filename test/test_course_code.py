@@ -93,6 +93,52 @@ def test_every_readme_row_names_a_tf_demo_module_with_its_names() -> None:
         assert not missing, f'{match.group(2)} lacks {missing} (README row {match.group(1)})'
 
 
+def rclpy_rows() -> dict[str, tuple[str, list[str]]]:
+    """README rows of rclpy's submodules: ``{'time': ('tf_demo.transport.clock', ['Time'])}``."""
+    text = (REPO_ROOT / 'README.md').read_text(encoding='utf-8')
+    section = text.split(SECTION, 1)[1].split('\n#', 1)[0]
+    rows = {}
+    for line in section.splitlines():
+        if (match := ROW.match(line)) and match.group(1).startswith('rclpy.'):
+            names = re.findall(r'`([A-Za-z_]\w*)`', line.split('|')[3])
+            rows[match.group(1).removeprefix('rclpy.')] = (match.group(2), names)
+    return rows
+
+
+def test_the_import_map_answers_rclpys_submodules_by_attribute() -> None:
+    """``import tf_demo.transport as rclpy``: ``rclpy.time.Time()`` and every row's path work."""
+    import importlib
+
+    import tf_demo.transport as rclpy
+    from tf_demo.transport.node import Node
+
+    rows = rclpy_rows()
+    assert sorted(rows) == sorted(rclpy.RCLPY_SUBMODULES)
+    for name, (module, names) in rows.items():
+        row_module = importlib.import_module(module)
+        for attribute in names:
+            assert getattr(getattr(rclpy, name), attribute) is getattr(row_module, attribute)
+    assert rclpy.time.Time().nanoseconds == 0  # "the latest", as tf2 reads it
+    assert rclpy.duration.Duration(seconds=0.5).nanoseconds == 500_000_000
+    assert rclpy.node.Node is Node
+
+
+@pytest.mark.rclpy_world
+def test_the_rows_attribute_paths_are_real_rclpys() -> None:
+    """Each ``rclpy.<name>`` of the README's rows is a real rclpy submodule with those names."""
+    import importlib
+
+    text = (REPO_ROOT / 'README.md').read_text(encoding='utf-8')
+    for name in rclpy_rows():
+        row = next(line for line in text.splitlines() if line.startswith(f'| `rclpy.{name}` |'))
+        # After "; also" or " (and": names rclpy keeps elsewhere or tf_demo adds.
+        rclpys_part = re.split(r'; also| \(and', row.split('|')[3])[0]
+        names = re.findall(r'`([A-Za-z_]\w*)`', rclpys_part)
+        module = importlib.import_module(f'rclpy.{name}')
+        missing = [n for n in names if not hasattr(module, n)]
+        assert not missing, f'rclpy.{name} lacks {missing}'
+
+
 def write_rewritten(tmp_path: Path) -> Path:
     """The course's nodes with their imports changed, in ``tmp_path``."""
     modules = readme_module_map()

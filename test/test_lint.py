@@ -288,6 +288,11 @@ TESTED_ELSEWHERE = {
         f'tested in both worlds by test/transport/dds/test_{name}*.py'
         for name in _WORLD_FACADES
     },
+    **{
+        f'tf_demo/transport/{name}.py': "rclpy's module name for another facade's names: "
+        'test/test_course_code.py checks that each answers its README row'
+        for name in ('duration', 'parameter', 'time')
+    },
     'tf_demo/transport/dds_backend.py': "re-exports transport/dds/'s public names as the "
     'standalone backend: test/transport/test_backend.py checks the world takes it, and the '
     'tests under test/transport/dds/ reach the runtime through it',

@@ -5,7 +5,8 @@
 #   bash tools/setup.sh test             the whole test suite, in both worlds
 #
 # It installs what it needs itself: Debian packages (apt), a virtual environment in .venv and the
-# pip packages (this package with its [dds,test] extras). Exit status is the job's. The install
+# pip packages (this package with its [dds,view] extras for the demo, all of them for the
+# tests). Exit status is the job's. The install
 # compiles the hot modules with mypyc (TF_DEMO_INTERPRETED=1 runs them from their sources).
 #
 # The test job runs the standalone suite (pytest in .venv, no ROS) on the compiled build, then
@@ -62,9 +63,12 @@ if [ ! -x "$venv/bin/python" ]; then
   echo "== python3 -m venv .venv"
   python3 -m venv "$venv"
 fi
-echo "== pip install -e .[dds,test,view,bag] colcon-common-extensions (mypyc compiles the hot modules)"
+# The demo installs what it runs (the DDS backend and tf_view); the tests need all the extras.
+pip_packages=(-e ".[dds,view]")
+if [ "$job" = test ]; then pip_packages=(-e ".[dds,test,view,bag]" colcon-common-extensions); fi
+echo "== pip install ${pip_packages[*]} (mypyc compiles the hot modules)"
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" --upgrade pip
-"$venv/bin/python" -m pip install "${pip_quiet[@]}" -e ".[dds,test,view,bag]" colcon-common-extensions
+"$venv/bin/python" -m pip install "${pip_quiet[@]}" "${pip_packages[@]}"
 build_line="$("$venv/bin/python" -m tf_demo)"
 echo "== $build_line"
 if [ "$job" = test ] && [[ "$build_line" != *", compiled ("* ]]; then

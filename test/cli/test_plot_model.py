@@ -22,7 +22,9 @@ import numpy as np
 import pytest
 from tf_demo.cli._plot_model import DEFAULT_MAX_SAMPLES
 from tf_demo.cli._plot_model import first_sentence
+from tf_demo.cli._plot_model import live_span
 from tf_demo.cli._plot_model import MAX_SAMPLES
+from tf_demo.cli._plot_model import old_stamps_hint
 from tf_demo.cli._plot_model import sample_times
 from tf_demo.cli._plot_model import sample_track
 from tf_demo.core.buffer_core import BufferCore
@@ -142,3 +144,25 @@ def test_first_sentence_drops_the_details() -> None:
     assert first_sentence('Lookup would fail.  Requested time 3.5 but ...') == 'Lookup would fail'
     assert first_sentence('"x" does not exist. ') == '"x" does not exist'
     assert first_sentence('no full stop') == 'no full stop'
+
+
+def test_a_live_span_on_a_sim_clock_starts_at_its_first_message() -> None:
+    """The clock read 0 at the start (no /clock yet): the span starts at the first message."""
+    assert live_span(5, 9, [6, 7]) == (5, 9)
+    assert live_span(0, 90, [0, 40, 30]) == (30, 90)
+    assert live_span(0, 90, []) == (90, 90)
+
+
+def test_only_all_future_extrapolations_get_the_old_stamps_hint() -> None:
+    """Data older than every sample: the hint; a sample that worked, or another error: none."""
+    core = BufferCore()
+    core.set_transform('odom', 'base_link', 1_000, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+    core.set_transform('odom', 'base_link', 2_000, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+    future = sample_track(core, 'odom', 'base_link', range(10**9, 2 * 10**9, 10**8))
+    hint = old_stamps_hint(future)
+    assert hint is not None
+    assert 'tf_play --clock' in hint
+    partly = sample_track(core, 'odom', 'base_link', range(1_000, 10**9, 10**8))
+    assert old_stamps_hint(partly) is None
+    unknown = sample_track(core, 'map', 'base_link', range(10**9, 2 * 10**9, 10**8))
+    assert old_stamps_hint(unknown) is None

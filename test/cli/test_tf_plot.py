@@ -189,3 +189,37 @@ def test_the_executable_is_installed() -> None:
     )  # fmt: skip
     assert completed.returncode == 0
     assert completed.stdout.startswith('usage: tf_plot [-h] -o OUTPUT')
+
+
+@pytest.mark.dds
+@pytest.mark.usefixtures('ros')
+def test_live_plot_in_sim_time_samples_the_played_bags_clock(spawn: Any, tmp_path: Path) -> None:
+    """``tf_play --clock`` + ``use_sim_time:=true``: the span is the bag's time, not 0 to now."""
+    bag = circle_bag(tmp_path / 'circle.mcap', seconds=60, end_s=61)
+    spawn.start('tf_play', str(bag), '--clock')
+    output = tmp_path / 'sim.png'
+    process = spawn.start(
+        'tf_plot', 'odom', 'base_link', '--duration', '3', '-o', str(output),
+        '--ros-args', '-p', 'use_sim_time:=true',
+    )  # fmt: skip
+    stdout, stderr = process.communicate(timeout=120)
+    assert process.returncode == 0, stderr
+    samples, failed = (int(stdout.split(': ')[2].split()[i]) for i in (0, 6))
+    assert 50 <= samples <= 160, stdout  # about 3 s of the bag's clock at 50 per second
+    assert failed <= samples // 4, stdout
+    assert 'hint' not in stdout, stdout
+
+
+@pytest.mark.dds
+@pytest.mark.usefixtures('ros')
+def test_live_plot_of_a_bag_played_without_clock_says_why(spawn: Any, tmp_path: Path) -> None:
+    """Old stamps and the wall clock: every sample fails, and tf_plot says why and what to do."""
+    bag = circle_bag(tmp_path / 'circle.mcap', seconds=60, end_s=61)
+    spawn.start('tf_play', str(bag))
+    output = tmp_path / 'wall.png'
+    process = spawn.start('tf_plot', 'odom', 'base_link', '--duration', '3', '-o', str(output))
+    stdout, stderr = process.communicate(timeout=120)
+    assert process.returncode == 0, stderr
+    assert 'tf_plot: hint: every lookup asked for a time later than the newest data' in stdout
+    assert 'tf_play --clock' in stdout
+    assert 'use_sim_time:=true' in stdout

@@ -377,6 +377,32 @@ def test_ros2_launch_starts_the_tree(
     assert ('tf_view: serving on http://' in text) == has_view, text
 
 
+@pytest.mark.parametrize('viewer_args', [('rviz:=false',), ('viewer:=web',)])
+def test_the_course_launch_takes_rviz_and_goes_on_without_a_viewer(
+    jazzy_env: dict[str, str], real_tf2: RealTf2Listener, tmp_path: Path, viewer_args: tuple[str]
+) -> None:
+    """The course's ``rviz:=false`` starts no viewer; tf_view without viser warns in one line."""
+    hidden = tmp_path / 'hidden' / 'viser'  # viser made unimportable for the launched nodes
+    hidden.mkdir(parents=True)
+    (hidden / '__init__.py').write_text("raise ImportError('viser is hidden by this test')\n")
+    env = {**jazzy_env, 'PYTHONPATH': f'{hidden.parent}:{jazzy_env.get("PYTHONPATH", "")}'}
+    command = ['ros2', 'launch', 'tf_demo', 'tf_demo.launch.py', *viewer_args]
+    with started(command, env) as launch:
+        output = ProcessOutput(launch)
+        transform = real_tf2.lookup('odom', 'camera_link', timeout=40.0)
+        if viewer_args == ('viewer:=web',):
+            output.wait_for_line('tf_view: warning: no view', timeout=60, anywhere=True)
+        code = stop(launch, timeout=30)
+        time.sleep(0.1)  # let the pump threads drain the pipe
+    text = '\n'.join(output.lines)
+    assert transform is not None, text
+    assert code == 0, text
+    assert 'process has died' not in text, text
+    assert 'rviz2' not in text, text
+    warnings = [line for line in output.lines if 'tf_view: warning: no view' in line]
+    assert len(warnings) == (viewer_args == ('viewer:=web',)), text
+
+
 def _without_launchs_lost_interrupt(lines: list[str]) -> list[str]:
     """
     ``lines`` without the one traceback that is upstream launch's own, not a node's.

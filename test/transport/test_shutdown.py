@@ -275,3 +275,37 @@ def idle_for(seconds: float) -> None:
     started = time.monotonic()
     while time.monotonic() - started < seconds:
         time.sleep(0.001)
+
+
+SPIN_NODE = """
+import tf_demo.transport as rclpy
+
+rclpy.init()
+node = rclpy.create_node('spinner')
+print('spinning', flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    print('interrupted', flush=True)
+"""
+
+
+def test_kill_int_stops_a_node_started_with_sigint_ignored(world_env: dict[str, str]) -> None:
+    """``node &`` from a script inherits SIGINT ignored; ``init`` takes it back, as rclpy does."""
+    process = subprocess.Popen(
+        [sys.executable, '-c', SPIN_NODE],
+        env=world_env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN),  # noqa: PLW1509
+    )
+    try:
+        assert process.stdout is not None
+        assert process.stdout.readline().strip() == 'spinning'
+        process.send_signal(signal.SIGINT)
+        stdout, stderr = process.communicate(timeout=30)
+    finally:
+        process.kill()
+        process.wait()
+    assert 'interrupted' in stdout, stderr

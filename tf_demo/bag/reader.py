@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING
 from typing import TypeVar
 
 from tf_demo.core.buffer_core import BufferCore
+from tf_demo.core.extras import extra_hint
 from tf_demo.msgs.cdr import decode_tf_message_transforms
 from tf_demo.msgs.cdr import TransformTuple
 
@@ -207,7 +208,7 @@ def open_tf_bag(
     try:
         from rosbags.rosbag2 import Reader
     except ImportError as error:
-        msg = f"reading bags needs the 'bag' extra (pip install 'tf_demo[bag]'): {error}"
+        msg = f"reading bags needs the 'bag' extra ({extra_hint('bag')}): {error}"
         raise BagError(msg) from None
     bag = Path(path)
     if not bag.exists():

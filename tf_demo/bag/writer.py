@@ -37,6 +37,7 @@ from typing import TypeVar
 
 from tf_demo.bag.reader import BagError
 from tf_demo.bag.reader import ClosesOnExit
+from tf_demo.core.extras import extra_hint
 
 if TYPE_CHECKING:
     from rosbags.interfaces import Connection
@@ -138,7 +139,7 @@ class TfBagWriter(ClosesOnExit):
             from rosbags.typesys import get_typestore
             from rosbags.typesys import Stores
         except ImportError as error:
-            msg = f"writing bags needs the 'bag' extra (pip install 'tf_demo[bag]'): {error}"
+            msg = f"writing bags needs the 'bag' extra ({extra_hint('bag')}): {error}"
             raise BagError(msg) from None
         unknown = [topic for topic in topics if topic not in TOPIC_TYPES]
         if unknown or storage not in STORAGES:

@@ -188,3 +188,33 @@ def _closed(span: tuple[int, str, str, str], end_ns: int) -> FailureSpan:
     """Return the failure span begun at ``span[0]`` and ending at ``end_ns``."""
     start_ns, _, error, kind = span
     return FailureSpan(start_ns, end_ns, error, kind)
+
+
+def live_span(clock_start_ns: int, clock_end_ns: int, receive_ns: list[int]) -> tuple[int, int]:
+    """
+    Return the span of a live recording to sample, on the listener's clock.
+
+    With ``use_sim_time`` the clock reads 0 until the first ``/clock`` message: the span then
+    starts at the first message received on a running clock, not at time 0.
+    """
+    if clock_start_ns > 0:
+        return clock_start_ns, clock_end_ns
+    running = [stamp for stamp in receive_ns if stamp > 0]
+    return (min(running) if running else clock_end_ns), clock_end_ns
+
+
+#: What tf_plot says when every live sample asked for a time later than the newest data.
+OLD_STAMPS_HINT = (
+    'every lookup asked for a time later than the newest data: the transforms carry old stamps '
+    '(a bag played without --clock?). Play it with `tf_play --clock` and run tf_plot with '
+    '`--ros-args -p use_sim_time:=true`, or plot the bag itself with --bag'
+)
+
+
+def old_stamps_hint(track: Track) -> str | None:
+    """Return :data:`OLD_STAMPS_HINT` when every sample failed by extrapolating into the future."""
+    if track.succeeded.any() or not track.failures:
+        return None
+    if all('into the future' in span.error for span in track.failures):
+        return OLD_STAMPS_HINT
+    return None

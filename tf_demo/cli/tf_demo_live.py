@@ -50,6 +50,8 @@ from typing import IO
 from typing import TYPE_CHECKING
 
 from tf_demo.core.exceptions import TransformException
+from tf_demo.core.extras import extra_hint
+from tf_demo.core.python_child import python_child_command
 from tf_demo.msgs.convert import transform_stamped_args
 from tf_demo.msgs.convert import TransformStampedLike
 from tf_demo.transport.ros_args import split_ros_args
@@ -170,7 +172,7 @@ class Child:
 def child_command(module: str, *args: str) -> list[str]:
     """Command line running ``module``'s ``main()`` with this interpreter."""
     code = f'import sys; from {module} import main; sys.exit(main())'
-    return [sys.executable, '-c', code, *args]
+    return python_child_command(code, *args)
 
 
 def prefixed(name: str, line: str) -> str:
@@ -239,7 +241,7 @@ def start_children(options: argparse.Namespace, children: list[Child]) -> None:
         if importlib.util.find_spec('viser') is None:
             print(
                 "tf_demo_live: tf_view not started: install the 'view' extra "
-                "(pip install 'tf_demo[view]') for the 3D view in the browser",
+                f'({extra_hint("view")}) for the 3D view in the browser',
                 flush=True,
             )
             return

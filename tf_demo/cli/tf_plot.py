@@ -38,10 +38,13 @@ from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
 from tf_demo.cli._observations import buffer_from_observations
+from tf_demo.cli._plot_model import live_span
+from tf_demo.cli._plot_model import old_stamps_hint
 from tf_demo.cli._plot_model import sample_times
 from tf_demo.cli._plot_model import sample_track
 from tf_demo.cli._plot_model import Track
 from tf_demo.core.buffer_core import BufferCore
+from tf_demo.core.extras import extra_hint
 from tf_demo.core.files import output_path_error
 from tf_demo.core.files import OutputFileError
 from tf_demo.core.files import write_bytes_atomically
@@ -126,17 +129,21 @@ def _plot_live(options: argparse.Namespace) -> int:
         observations = recorder.observations()
     finally:
         node.destroy_node()
+    start_ns, end_ns = live_span(start_ns, end_ns, [o.receive_ns for o in observations])
     cache_ns = end_ns - start_ns + _CACHE_MARGIN_NS
     core = buffer_from_observations(observations, cache_time_ns=cache_ns)
     track = _track(core, options, start_ns, end_ns)
-    return _write_plot(track, options.output, f'live, {len(observations)} messages')
+    code = _write_plot(track, options.output, f'live, {len(observations)} messages')
+    if (hint := old_stamps_hint(track)) is not None:
+        print(f'{TOOL}: hint: {hint}', flush=True)
+    return code
 
 
 def _require_matplotlib() -> None:
     try:
         import matplotlib  # noqa: F401 (only whether it is there)
     except ImportError as error:
-        msg = f"plotting needs matplotlib (pip install 'tf_demo[bag]'): {error}"
+        msg = f"plotting needs matplotlib, of the 'bag' extra ({extra_hint('bag')}): {error}"
         raise ToolError(msg) from None
 
 

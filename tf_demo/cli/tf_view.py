@@ -54,6 +54,7 @@ from tf_demo.cli._view_model import FrameView
 from tf_demo.cli._view_model import SceneView
 from tf_demo.cli._view_model import tree_markdown
 from tf_demo.cli._view_robot import visual_meshes
+from tf_demo.core.extras import extra_hint
 from tf_demo.core.lazy_import import lazy_module
 from tf_demo.nodes.helpers import rate_error
 from tf_demo.nodes.joint_state_publisher import FreeJoint
@@ -107,6 +108,11 @@ def build_parser() -> argparse.ArgumentParser:
         '--publish-joint-states',
         action='store_true',
         help="publish the joint panel's positions on /joint_states from the start",
+    )
+    parser.add_argument(
+        '--optional',
+        action='store_true',
+        help="without the 'view' extra, warn in one line and exit 0 (the launch files' viewer)",
     )
     parser.add_argument(
         '--stale-after',
@@ -403,9 +409,14 @@ def _serve(options: argparse.Namespace) -> int:
     try:
         import viser
     except ImportError as error:
-        raise ToolError(
-            f"needs the 'view' extra (pip install 'tf_demo[view]'): {error}"
-        ) from error
+        if options.optional:
+            print(
+                f"{TOOL}: warning: no view: the 'view' extra is missing ({extra_hint('view')})",
+                file=sys.stderr,
+                flush=True,
+            )
+            return 0
+        raise ToolError(f"needs the 'view' extra ({extra_hint('view')}): {error}") from error
     from tf_demo import transport
     from tf_demo.ros import Buffer
     from tf_demo.ros import TransformListener

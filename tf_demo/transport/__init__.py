@@ -35,7 +35,7 @@ import os
 import signal
 import sys
 import threading
-import time
+import time as _time
 from types import FrameType
 from types import ModuleType
 from typing import Any
@@ -49,11 +49,22 @@ from tf_demo.transport.ros_args import ROS_ARGS_USAGE
 from tf_demo.transport.ros_args import RosArgsError
 
 if TYPE_CHECKING:
+    # RCLPY_SUBMODULES, attributes of this package at run time once the node API is in use.
+    from tf_demo.transport import callback_groups as callback_groups
+    from tf_demo.transport import clock as clock
+    from tf_demo.transport import duration as duration
+    from tf_demo.transport import executors as executors
+    from tf_demo.transport import logging as logging
+    from tf_demo.transport import node as node
+    from tf_demo.transport import parameter as parameter
+    from tf_demo.transport import qos as qos
+    from tf_demo.transport import time as time
     from tf_demo.transport.executors import Executor
     from tf_demo.transport.future import Future
     from tf_demo.transport.node import Node
 
 __all__ = [
+    'RCLPY_SUBMODULES',
     'BackendError',
     'NodeConfigError',
     'RosArgsError',
@@ -61,6 +72,7 @@ __all__ = [
     'backend_module',
     'backend_name',
     'create_node',
+    'import_rclpy_submodules',
     'init',
     'ok',
     'run_node',
@@ -75,6 +87,21 @@ __all__ = [
 #: from C).
 SignalHandler = Callable[[int, FrameType | None], object] | int | signal.Handlers | None
 
+#: rclpy's submodules that ``import tf_demo.transport as rclpy`` answers by attribute
+#: (``rclpy.time.Time()``, ``rclpy.duration.Duration()``, as the course writes them): this
+#: package's modules of the same names, imported once the node API is in use, as rclpy's are.
+RCLPY_SUBMODULES = (
+    'callback_groups',
+    'clock',
+    'duration',
+    'executors',
+    'logging',
+    'node',
+    'parameter',
+    'qos',
+    'time',
+)
+
 _BACKEND_MODULES = {
     'rclpy': 'tf_demo.transport.rclpy_backend',
     'dds': 'tf_demo.transport.dds_backend',
@@ -84,6 +111,27 @@ _BACKEND_MODULES = {
 def backend_module() -> ModuleType:
     """Return the selected backend's module (imported on first use)."""
     return importlib.import_module(_BACKEND_MODULES[backend_name()])
+
+
+def import_rclpy_submodules() -> None:
+    """Import :data:`RCLPY_SUBMODULES`, making them attributes of this package (as rclpy.node)."""
+    for name in RCLPY_SUBMODULES:
+        importlib.import_module(f'{__name__}.{name}')
+
+
+def _take_back_an_ignored_sigint() -> None:
+    """
+    Make SIGINT raise ``KeyboardInterrupt`` even when the process inherited it ignored.
+
+    A node started with ``&`` from a non-interactive shell starts with SIGINT ignored, and
+    Python then installs no handler; rclpy's ``init`` installs its own regardless, so
+    ``kill -INT`` stops an rclpy node: the standalone world does the same.
+    """
+    if (
+        threading.current_thread() is threading.main_thread()
+        and signal.getsignal(signal.SIGINT) == signal.SIG_IGN
+    ):
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def init(args: Sequence[str] | None = None) -> None:
@@ -96,6 +144,7 @@ def init(args: Sequence[str] | None = None) -> None:
     """
     argv = list(sys.argv if args is None else args)
     if backend_name() == 'dds':
+        _take_back_an_ignored_sigint()
         from tf_demo.transport import logging as node_logging
 
         for logger_name, level in parse_ros_args(argv).log_levels:
@@ -104,6 +153,7 @@ def init(args: Sequence[str] | None = None) -> None:
             else:
                 node_logging.set_logger_level(logger_name, level)
     backend_module().init(args=argv)
+    import_rclpy_submodules()
 
 
 def shutdown() -> None:
@@ -268,7 +318,7 @@ def _is_rclpy_finaliser(function: object) -> bool:
 
 def _interrupt_main_soon() -> None:
     """Run the main thread's SIGINT handler shortly (after the caller has returned)."""
-    time.sleep(0.001)
+    _time.sleep(0.001)
     _thread.interrupt_main(signal.SIGINT)
 
 

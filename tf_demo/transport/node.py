@@ -31,3 +31,9 @@ if TYPE_CHECKING or not rclpy_world():
     from tf_demo.transport.dds.node import *  # noqa: F403 - the standalone names
 else:  # pragma: no cover - needs a ROS 2 installation
     from rclpy.node import *  # noqa: F403 - rclpy's own
+
+# As ``rclpy.node`` imports rclpy.time, rclpy.qos, ...: with ``import tf_demo.transport as
+# rclpy``, the course's ``rclpy.time.Time()`` works once its ``Node`` is imported.
+from tf_demo.transport import import_rclpy_submodules
+
+import_rclpy_submodules()

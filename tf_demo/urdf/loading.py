@@ -40,6 +40,7 @@ from typing import IO
 from tf_demo.core.files import InputFileError
 from tf_demo.core.files import MAX_TEXT_FILE_BYTES
 from tf_demo.core.files import read_text_file
+from tf_demo.core.python_child import python_child_command
 from tf_demo.urdf.errors import UrdfBrokenRefError
 from tf_demo.urdf.errors import UrdfError
 from tf_demo.urdf.errors import UrdfMalformedError
@@ -203,13 +204,12 @@ def expand_xacro(
         'path': source,
         'mappings': {str(k): str(v) for k, v in (mappings or {}).items()},
         'package_paths': [str(p) for p in package_paths or ()],
-        'sys_path': [p for p in sys.path if isinstance(p, str)],
+        'sys_path': [p for p in sys.path if isinstance(p, str) and p],  # '' is the cwd
         'timeout_s': timeout_s,
     }
-    python = sys.executable or 'python3'
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         process = subprocess.Popen(  # our own interpreter and bootstrap
-            [python, '-c', _WORKER_BOOTSTRAP],
+            python_child_command(_WORKER_BOOTSTRAP),
             stdin=subprocess.PIPE,
             stdout=out,
             stderr=err,

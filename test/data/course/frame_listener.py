@@ -21,7 +21,6 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy
 from rclpy.qos import QoSProfile
-from rclpy.time import Time
 import tf2_geometry_msgs  # noqa: F401 - registers geometry_msgs types for Buffer.transform
 from tf2_msgs.msg import TFMessage
 from tf2_ros import TransformException
@@ -48,7 +47,10 @@ class FrameListener(Node):
     def on_timer(self):
         try:
             t = self.tf_buffer.lookup_transform(
-                self.target_frame, 'camera_link', Time(), timeout=Duration(seconds=0.05)
+                self.target_frame,
+                'camera_link',
+                rclpy.time.Time(),  # as the course writes it: rclpy's submodules by attribute
+                timeout=rclpy.duration.Duration(seconds=0.05),
             )
         except TransformException as ex:
             self.get_logger().info(f'Could not transform {self.target_frame} to camera_link: {ex}')
