@@ -171,9 +171,21 @@ setup(
     ext_modules=_ext_modules(),
     cmdclass={'build_ext': BuildExt},
     python_requires='>=3.10',
+    # What tools/other_pythons.sh and the suite test (README, "Pythons and platforms").
+    classifiers=[
+        'Programming Language :: Python :: 3',
+        'Programming Language :: Python :: 3 :: Only',
+        'Programming Language :: Python :: 3.10',
+        'Programming Language :: Python :: 3.11',
+        'Programming Language :: Python :: 3.12',
+        'Programming Language :: Python :: 3.13',
+        'Programming Language :: Python :: Implementation :: CPython',
+        'Operating System :: POSIX :: Linux',
+        'Typing :: Typed',
+    ],
     install_requires=[
         'setuptools',
-        'numpy>=1.24',
+        'numpy>=1.21',
         'PyYAML>=5.4',
         'lxml',
         'yourdfpy>=0.0.56',

@@ -10,8 +10,9 @@
 # compiles the hot modules with mypyc (TF_DEMO_INTERPRETED=1 runs them from their sources).
 #
 # The test job runs the standalone suite (pytest in .venv, no ROS) on the compiled build, then
-# the core's and the codec's tests on the interpreted build; then, where ROS 2 Jazzy is
-# installed (/opt/ros/jazzy/setup.bash), the ROS-world suite: colcon build + colcon test in an
+# the core's and the codec's tests on the interpreted build, then a subset on every other CPython
+# it finds (tools/other_pythons.sh: 3.10, 3.12, 3.13, 3.14, each from a wheel built for it);
+# then, where ROS 2 Jazzy is installed (/opt/ros/jazzy/setup.bash), the ROS-world suite: colcon build + colcon test in an
 # overlay workspace on that Jazzy (compiled too), with a virtual environment of the system Python
 # that sees Jazzy's rclpy (.venv-jazzy, --system-site-packages) and has no cyclonedds Python
 # package, and again the core's and the codec's tests interpreted. A failure anywhere fails the
@@ -122,6 +123,11 @@ if [ -z "$interpreted_summary" ] || [ "$interpreted_status" = 5 ]; then
   interpreted_status=1
 fi
 
+# -- every other CPython found (3.10, 3.12, 3.13, 3.14): a wheel each, the standalone subset ----
+echo "== other Pythons: bash tools/other_pythons.sh (a wheel per interpreter, the standalone subset)"
+pythons_status=0
+bash tools/other_pythons.sh "$logs" || pythons_status=$?
+
 # -- the ROS world: colcon build + colcon test in an overlay on ROS 2 Jazzy ---------------------
 ros_status=0
 ros_summary=''
@@ -186,7 +192,9 @@ if [ -f "$jazzy_setup" ]; then
   if [ -z "$ros_summary" ] || grep -qE '^Summary: 0 tests' "$logs/ros.log"; then
     ros_status=1
   fi
-  echo "== ROS world, interpreted build: pytest ${interpreted_tests[*]} (TF_DEMO_INTERPRETED=1)"
+  # The core only: the codec is never compiled, and its tests ran interpreted above.
+  ros_interpreted_tests=(test/core)
+  echo "== ROS world, interpreted build: pytest ${ros_interpreted_tests[*]} (TF_DEMO_INTERPRETED=1)"
   ros_interpreted_status=0
   (
     set +u
@@ -199,7 +207,7 @@ if [ -f "$jazzy_setup" ]; then
     export RMW_IMPLEMENTATION="${RMW_IMPLEMENTATION:-rmw_cyclonedds_cpp}"
     export TF_DEMO_INTERPRETED=1
     unset TF_DEMO_BACKEND
-    python -m pytest "${interpreted_tests[@]}" -p no:cacheprovider
+    python -m pytest "${ros_interpreted_tests[@]}" -p no:cacheprovider
   ) 2>&1 | tee "$logs/ros_interpreted.log" || ros_interpreted_status=$?
   ros_interpreted_summary="$(summary_line "$logs/ros_interpreted.log")"
   if [ -z "$ros_interpreted_summary" ] || [ "$ros_interpreted_status" = 5 ]; then
@@ -210,9 +218,12 @@ fi
 echo
 echo "== standalone world: ${standalone_summary:-no pytest summary (the suite did not run)}"
 echo "== standalone world, interpreted (${interpreted_tests[*]}): ${interpreted_summary:-no pytest summary}"
+if [ -f "$logs/pythons.txt" ]; then
+  cat "$logs/pythons.txt"
+fi
 if [ -f "$jazzy_setup" ]; then
   echo "== ROS world (rclpy, $(dirname "$jazzy_setup")): ${ros_summary:-no pytest summary}"
-  echo "== ROS world, interpreted (${interpreted_tests[*]}): ${ros_interpreted_summary:-no pytest summary}"
+  echo "== ROS world, interpreted (${ros_interpreted_tests[*]}): ${ros_interpreted_summary:-no pytest summary}"
 else
   echo "== ROS world: not run ($jazzy_setup not found; install ROS 2 Jazzy to run it)"
 fi
@@ -223,6 +234,10 @@ if [ "$standalone_status" != 0 ]; then
 fi
 if [ "$interpreted_status" != 0 ]; then
   echo "standalone interpreted run failed (exit $interpreted_status)" >&2
+  status=1
+fi
+if [ "$pythons_status" != 0 ]; then
+  echo "a run on another CPython failed (exit $pythons_status)" >&2
   status=1
 fi
 if [ "$ros_status" != 0 ]; then

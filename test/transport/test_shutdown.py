@@ -214,14 +214,15 @@ def test_an_interrupt_lost_in_a_callback_is_raised_again(
     def callback(_ref: object) -> None:
         signal.raise_signal(signal.SIGINT)  # the handler runs here, inside the callback
 
-    def drop_and_wait(thing: Thing) -> None:
+    def drop_and_wait() -> None:
+        thing = Thing()  # made here: on 3.10 a caller's argument outlives the callee's del
         ref = weakref.ref(thing, callback)
         del thing  # the callback runs: Python cannot raise out of it
         idle_for(1.0)  # the interrupt raised again lands here
         del ref
 
     with pytest.raises(KeyboardInterrupt):
-        drop_and_wait(Thing())
+        drop_and_wait()
     assert tool_stop_request.event.is_set()
     assert 'Exception ignored' not in capsys.readouterr().err
 
@@ -282,8 +283,8 @@ import tf_demo.transport as rclpy
 
 rclpy.init()
 node = rclpy.create_node('spinner')
-print('spinning', flush=True)
-try:
+try:  # the signal may come as soon as the line is out: inside the try
+    print('spinning', flush=True)
     rclpy.spin(node)
 except KeyboardInterrupt:
     print('interrupted', flush=True)

@@ -63,6 +63,14 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
 )
 settings.register_profile(
+    'matrix',
+    derandomize=True,
+    max_examples=10,
+    deadline=None,
+    print_blob=True,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
+settings.register_profile(
     'nightly',
     max_examples=2000,
     deadline=None,
@@ -74,14 +82,15 @@ def profile_settings(max_examples: int | None = None) -> settings:
     """
     Return the settings of the selected profile, optionally with another example count.
 
-    :param max_examples: overrides the profile's count (scaled up 20x for ``nightly``).
+    :param max_examples: overrides the profile's count (scaled up 20x for ``nightly``, down 10x
+        for ``matrix``: the other Pythons' runs, which look for what an interpreter breaks).
     """
     name = os.environ.get('TF_DEMO_HYPOTHESIS_PROFILE', 'ci')
     base = settings.get_profile(name)
     if max_examples is None:
         return base
-    scale = 20 if name == 'nightly' else 1
-    return settings(base, max_examples=max_examples * scale)
+    scale = {'nightly': 20.0, 'matrix': 0.1}.get(name, 1.0)
+    return settings(base, max_examples=max(1, int(max_examples * scale)))
 
 
 def frame_names(max_size: int = 6) -> st.SearchStrategy[str]:

@@ -32,6 +32,7 @@ import json
 import os
 from pathlib import Path
 import signal
+import site
 import subprocess
 import sys
 import tempfile
@@ -72,9 +73,18 @@ def _search_roots(package_paths: Sequence[str | Path] | None) -> list[Path]:
     return roots
 
 
+def _pip_data_prefixes() -> list[str]:
+    """Where pip puts a wheel's data files (``share/<package>``): the environment, the user."""
+    return list(dict.fromkeys((sys.prefix, site.getuserbase())))
+
+
 def find_package_share(package: str, package_paths: Sequence[str | Path] | None = None) -> Path:
     """
     Return the share directory of ``package`` without ROS.
+
+    Searched in order: ``package_paths``, ``TF_DEMO_PACKAGE_PATH``, ``AMENT_PREFIX_PATH`` (a
+    sourced ROS 2 or colcon workspace), then where pip installs a wheel's data files (this
+    environment's ``share/``, then the user's), where a ``package.xml`` marks the package.
 
     :param package: the package name.
     :param package_paths: extra directories holding ``<package>/`` folders, searched first.
@@ -91,10 +101,14 @@ def find_package_share(package: str, package_paths: Sequence[str | Path] | None 
         share = Path(prefix, 'share', package)
         if marker.is_file() or share.is_dir():
             return share
+    for prefix in _pip_data_prefixes():
+        share = Path(prefix, 'share', package)
+        if Path(share, 'package.xml').is_file():
+            return share
     searched = [str(r) for r in _search_roots(package_paths)]
     msg = (
         f"package '{package}' not found (searched {PACKAGE_PATH_VARIABLE} / package_paths "
-        f'{searched} and AMENT_PREFIX_PATH)'
+        f'{searched}, AMENT_PREFIX_PATH and {", ".join(_pip_data_prefixes())})'
     )
     raise PackageNotFoundError(msg)
 
