@@ -32,6 +32,8 @@ if (_here.parent / 'package.xml').is_file():
     sys.path.insert(0, str(_here.parent))  # the sources, not an older installed copy
 # The API pages are read from the sources: a compiled module (mypyc) has no type hints.
 os.environ.setdefault('TF_DEMO_INTERPRETED', '1')
+# They document the standalone world (rosdoc2 mocks rclpy: it must not be taken for the real one).
+os.environ.setdefault('TF_DEMO_BACKEND', 'dds')
 import tf_demo  # noqa: E402
 
 tf_demo_root = str(Path(tf_demo.__file__).resolve().parent.parent)
@@ -48,9 +50,11 @@ extensions = [
     'myst_parser',
     'tf_demo_sphinx',
 ]
-exclude_patterns = ['_build', 'license_header.txt']
+# rosdoc2 writes its own index.rst beside index.md (the root here): it is left out.
+exclude_patterns = ['_build', 'license_header.txt', 'index.rst']
 myst_heading_anchors = 3
 html_theme = 'furo'
+html_theme_options: dict[str, object] = {}  # not rosdoc2's (sphinx_rtd_theme's)
 html_title = 'tf_demo'
 
 # tf2's messages end with a space ("does not exist. "): compare text, not trailing blanks.
