@@ -217,6 +217,8 @@ setup(
             'build',
             'wheel',
         ],
+        # the documentation site (doc/conf.py), built by test/test_docs.py
+        'docs': ['sphinx>=7.2', 'furo', 'myst-parser>=2'],
     },
     zip_safe=False,
     maintainer='The tf_demo Authors',

@@ -56,6 +56,25 @@ PACKAGE_ROOT = Path(tf_demo.__file__).resolve().parent.parent
 ARTIFACTS = Path(os.environ.get('TF_DEMO_ARTIFACTS', REPO_ROOT / 'test-artifacts'))
 
 
+# The browser tests (tf_view's, the documentation site's): Debian's chromium and its driver.
+CHROMIUM = '/usr/bin/chromium'
+CHROMEDRIVER = '/usr/bin/chromedriver'
+# Chromium as root in a container: no sandbox, no GPU (WebGL through SwiftShader), and none
+# of the background connections this machine's closed network refuses.
+CHROMIUM_FLAGS = (
+    '--headless=new',
+    '--no-sandbox',
+    '--disable-gpu',
+    '--enable-unsafe-swiftshader',
+    '--disable-quic',
+    '--no-first-run',
+    '--disable-background-networking',
+    '--disable-component-update',
+    '--disable-sync',
+    '--window-size=1280,800',
+)
+
+
 def save_artifact(name: str, data: bytes) -> Path:
     """Save ``data`` as the test artifact ``name`` and return its path."""
     ARTIFACTS.mkdir(parents=True, exist_ok=True)

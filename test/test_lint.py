@@ -26,7 +26,7 @@ import pytest
 REPO_ROOT = Path(__file__).resolve().parent.parent
 HEADER = (REPO_ROOT / 'doc' / 'license_header.txt').read_text()
 PYTHON_DIRS = tuple(
-    name for name in ('tf_demo', 'test', 'bench', 'launch') if (REPO_ROOT / name).is_dir()
+    name for name in ('tf_demo', 'test', 'bench', 'launch', 'doc') if (REPO_ROOT / name).is_dir()
 )
 
 # design.md §2: dependencies point inward only.

@@ -66,7 +66,7 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 # The demo installs what it runs (the DDS backend and tf_view); the tests need all the extras.
 pip_packages=(-e ".[dds,view]")
-if [ "$job" = test ]; then pip_packages=(-e ".[dds,test,view,bag]" colcon-common-extensions); fi
+if [ "$job" = test ]; then pip_packages=(-e ".[dds,test,view,bag,docs]" colcon-common-extensions); fi
 echo "== pip install ${pip_packages[*]} (mypyc compiles the hot modules)"
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" --upgrade pip
 "$venv/bin/python" -m pip install "${pip_quiet[@]}" "${pip_packages[@]}"

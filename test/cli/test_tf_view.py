@@ -30,6 +30,9 @@ import re
 import time
 from typing import Any
 
+from conftest import CHROMEDRIVER
+from conftest import CHROMIUM
+from conftest import CHROMIUM_FLAGS
 from conftest import eventually
 from conftest import Processes
 from conftest import ProcessOutput
@@ -41,8 +44,6 @@ pytest.importorskip('viser', reason="tf_view needs the 'view' extra (viser)")
 webdriver = pytest.importorskip('selenium.webdriver', reason='the browser tests use selenium')
 Image = pytest.importorskip('PIL.Image', reason='screenshots are read with Pillow')
 
-CHROMIUM = '/usr/bin/chromium'
-CHROMEDRIVER = '/usr/bin/chromedriver'
 pytestmark = [
     pytest.mark.skipif(
         not (os.path.exists(CHROMIUM) and os.path.exists(CHROMEDRIVER)),
@@ -51,20 +52,6 @@ pytestmark = [
     pytest.mark.timeout(180),
 ]
 URDF = Path(__file__).resolve().parents[2] / 'urdf'
-# Chromium as root in a container: no sandbox, no GPU (WebGL through SwiftShader), and none
-# of the background connections this machine's closed network refuses.
-CHROMIUM_FLAGS = (
-    '--headless=new',
-    '--no-sandbox',
-    '--disable-gpu',
-    '--enable-unsafe-swiftshader',
-    '--disable-quic',
-    '--no-first-run',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    '--window-size=1280,800',
-)
 
 
 @pytest.fixture

@@ -19,9 +19,10 @@ A node that logs one line per malformed or rejected sample can be made to write 
 lines a second by any writer on the network. :class:`PerWriterThrottle` decides what to log:
 the first bad sample of a writer (and kind) is logged with its full text, the following ones
 are counted, and once ``period_ns`` has passed since the last line the next bad sample logs
-``<n> more <what> from <writer> in the last <s> s; the latest: <text>``. :meth:`pending` gives
-the counts not yet logged (for a final line at shutdown). Decoding (transport) and the tf
-listener and buffer (ros) share it, which is why it lives here, below both.
+``<n> more <what> from <writer> in the last <s> s; the latest: <text>``.
+:meth:`PerWriterThrottle.pending` gives the counts not yet logged (for a final line at
+shutdown). Decoding (transport) and the tf listener and buffer (ros) share it, which is why it
+lives here, below both.
 """
 
 from __future__ import annotations

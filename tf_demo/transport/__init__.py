@@ -216,7 +216,7 @@ class StopRequest:
     """
     SIGINT/SIGTERM for an executable's ``main``: the first signal asks to stop, later ones wait.
 
-    The first signal sets :attr:`event` (and with ``interrupt=True`` also raises
+    The first signal sets ``event`` (and with ``interrupt=True`` also raises
     ``KeyboardInterrupt`` in the main thread, for tools that block in a loop of their own). While
     the shutdown is under way every further SIGINT or SIGTERM is ignored, as rclpy's own C
     handler does (it only requests the same shutdown again), so a quick double Ctrl-C cannot cut

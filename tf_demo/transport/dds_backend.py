@@ -16,9 +16,10 @@
 The standalone world's node: the subset of ``rclpy.node.Node`` the package uses, over DDS.
 
 :class:`DdsNode` has rclpy's method names and signatures for publishers, subscriptions, timers,
-clock, parameters (the node-API's :class:`~tf_demo.transport.parameters.ParameterStore`), logger
-and graph counts. Names are expanded and validated as rcl does (relative names get the node's
-namespace, ``~`` is the node's fully qualified name) and remapped by ``--ros-args -r``.
+clock, parameters (the node-API's
+:class:`~tf_demo.transport.dds.parameter_store.ParameterStore`), logger and graph counts. Names
+are expanded and validated as rcl does (relative names get the node's namespace, ``~`` is the
+node's fully qualified name) and remapped by ``--ros-args -r``.
 
 Executors are waitset based and schedule as rclpy's: the spinning thread waits on the read
 conditions of the subscriptions its nodes may run now, a guard condition and the earliest timer

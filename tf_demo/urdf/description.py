@@ -16,7 +16,7 @@
 Strict URDF parsing and validation into plain, immutable data.
 
 This module is the functional core of loading: ``parse_robot(xml, source)`` either returns a
-:class:`RobotDescription` whose links form one tree, or raises a :class:`UrdfError` subclass whose
+:class:`RobotDescription` whose links form one tree, or raises a :exc:`.UrdfError` subclass whose
 message names the source, the element and the reason. It follows urdfdom's rules (what
 robot_state_publisher accepts) and adds the checks urdfdom lacks: a link that is the child of two
 joints, cycles, zero axes, duplicate names and mimic cycles. Every number goes through one

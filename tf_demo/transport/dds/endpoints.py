@@ -240,8 +240,8 @@ class DdsSubscription:
         """
         The user callback; setting it re-applies rclpy's one-or-two-argument rule.
 
-        It takes the message (or its CDR ``bytes`` when :attr:`raw`), and the
-        :class:`MessageInfo` when :attr:`wants_message_info`.
+        It takes the message (or its CDR ``bytes`` when ``raw``), and the
+        :class:`MessageInfo` when ``wants_message_info``.
         """
         return self._callback
 

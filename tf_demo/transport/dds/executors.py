@@ -376,7 +376,7 @@ class DdsExecutor:
                 return
 
     def spin(self) -> None:
-        """Run callbacks until :func:`shutdown` (or :meth:`shutdown` of this executor)."""
+        """Run callbacks until :func:`~tf_demo.transport.shutdown` (or :meth:`shutdown`)."""
         while _context.ok() and not self._shutdown:
             self.spin_once(None)
 

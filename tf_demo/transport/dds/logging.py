@@ -330,11 +330,11 @@ class Logger:
         """
         Print ``message`` at ``severity`` if enabled and rclpy's filters let it through.
 
-        :param kwargs: ``once=True``, ``skip_first=True``, ``throttle_duration_sec=<float>``
-            (evaluated in rclpy's order: throttle, skip_first, once), ``name=`` another logger.
         As in rclpy, a call below the logger's level returns False at once: its options are not
         checked and its call site keeps no state.
 
+        :param kwargs: ``once=True``, ``skip_first=True``, ``throttle_duration_sec=<float>``
+            (evaluated in rclpy's order: throttle, skip_first, once), ``name=`` another logger.
         :return: False when the level or a filter dropped the message, else True.
         :raises TypeError: for an unknown or incomplete option, or a message or name that is
             not a string (pybind11's text of rclpy's C logging function).

@@ -96,8 +96,10 @@ class DdsNode(NodeParametersMixin, NodeServicesMixin, NodeEndpointsMixin):
 
     :param node_name: the node's name (``__node:=`` in ``--ros-args`` overrides it).
     :param namespace: absolute or relative namespace (``__ns:=`` overrides it).
-    :param cli_args: this node's own ``--ros-args`` (in addition to those given to :func:`init`).
-    :param use_global_arguments: whether the arguments given to :func:`init` apply.
+    :param cli_args: this node's own ``--ros-args`` (in addition to those given to
+        :func:`~tf_demo.transport.init`).
+    :param use_global_arguments: whether the arguments given to :func:`~tf_demo.transport.init`
+        apply.
     :param parameter_overrides: ``Parameter`` objects that replace declared defaults.
     """
 

@@ -18,7 +18,7 @@
 Each node created with ``enable_rosout=True`` (the default) gets a ``rcl_interfaces/msg/Log``
 writer on ``/rosout`` with rcl's rosout QoS (reliable, transient local, keep last 1000, lifespan
 10 s), registered under its logger's name. Every message a logger emits
-(:func:`tf_demo.transport.logging.add_log_sink`) whose logger name is registered, or whose
+(:func:`tf_demo.transport.dds.logging.add_log_sink`) whose logger name is registered, or whose
 logger is a child (``get_child``) of a registered one, is published with rcl's fields: stamp,
 level (10..50), logger name, text, file, function and line.
 """
