@@ -182,3 +182,37 @@ def test_echo_stops_quietly_when_the_reader_goes_away(spawn, tf_peers):
     echo.stdout.close()
     assert echo.wait(timeout=30) == 0
     assert 'Traceback' not in echo.stderr.read()
+
+
+def test_echo_and_monitor_read_a_namespaced_robot_with_namespace(spawn):
+    """A robot whose TF is under /robot1 (remapped, as a fleet does) is read with --namespace."""
+    spawn.start(
+        'static_transform_publisher', '--x', '2', '--frame-id', 'base', '--child-frame-id',
+        'laser', '--ros-args', '-r', '/tf_static:=/robot1/tf_static',
+    )  # fmt: skip
+    code, out, err = run(
+        spawn, 'tf_echo', 'base', 'laser', '20', '--limit', '1', '--namespace', 'robot1'
+    )
+    assert code == 0, err
+    assert '- Translation: [2.000, 0.000, 0.000]' in out
+    code, out, err = run(spawn, 'tf_monitor', '--namespace', '/robot1/', '--limit', '1')
+    assert code == 0, err
+    assert 'laser' in out
+
+
+READING_TOOLS = ['tf_echo', 'tf_monitor', 'tf_doctor', 'view_frames', 'tf_view', 'tf_record']
+
+
+@pytest.mark.parametrize('tool', [*READING_TOOLS, 'tf_plot'])
+def test_every_reading_tool_refuses_a_bad_namespace_in_one_line(spawn, tool):
+    """--namespace takes rmw's namespace rules: a bad one is one line on stderr and exit 2."""
+    frames = {
+        'tf_echo': ['a', 'b'],
+        'tf_plot': ['a', 'b', '-o', 'plot.png', '--duration', '1'],
+        'tf_record': ['-o', 'bag'],
+    }.get(tool, [])
+    code, _, err = run(spawn, tool, *frames, '--namespace', 'robot 1')
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1
+    assert "--namespace 'robot 1' is not a valid namespace" in lines[0]

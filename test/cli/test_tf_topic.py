@@ -20,6 +20,7 @@ import re
 from typing import Any
 
 from conftest import ProcessOutput
+from conftest import REPO_ROOT
 from tf_demo.cli.formatting import format_message_yaml
 from tf_demo.cli.tf_topic import HzStats
 from tf_demo.msgs.sensor_msgs import JointState
@@ -97,8 +98,35 @@ def test_hz_measures_dynamic_tf_pub(spawn: Any) -> None:
     assert hz.wait_for_line('\tmin: ', timeout=10)
 
 
-def test_refuses_other_topics(spawn: Any) -> None:
+def test_a_namespaced_topic_by_its_name(spawn: Any) -> None:
+    """A robot's /robot1/tf_static (its statics remapped there) is read as tf_static: latched."""
+    spawn.start('static_tf_pub', '--ros-args', '-r', '/tf_static:=/robot1/tf_static')
+    echo = spawn.start('tf_topic', 'echo', '/robot1/tf_static', '--once')
+    out, err = echo.communicate(timeout=60)
+    assert echo.returncode == 0, err
+    assert 'child_frame_id: camera_link' in out
+
+
+def test_any_other_name_takes_its_type_from_the_graph(spawn: Any) -> None:
+    """An unknown name gets the publisher's type and durability: latched TFMessage here."""
+    spawn.start('static_tf_pub', '--ros-args', '-r', '/tf_static:=/fleet/statics')
+    echo = spawn.start('tf_topic', 'echo', '/fleet/statics', '--once')
+    out, err = echo.communicate(timeout=60)
+    assert echo.returncode == 0, err
+    assert 'child_frame_id: camera_link' in out
+
+
+def test_refuses_a_topic_of_another_type(spawn: Any) -> None:
+    """robot_state_publisher's /robot_description is a std_msgs String: refused, exit 1."""
+    spawn.start('robot_state_publisher', str(REPO_ROOT / 'urdf' / 'example_fixed.urdf'))
+    process = spawn.start('tf_topic', 'echo', '/robot_description')
+    _, err = process.communicate(timeout=60)
+    assert process.returncode == 1
+    assert "topic '/robot_description' has type std_msgs/msg/String" in err
+
+
+def test_refuses_a_topic_nobody_publishes(spawn: Any) -> None:
     process = spawn.start('tf_topic', 'echo', '/chatter')
     _, err = process.communicate(timeout=60)
-    assert process.returncode == 2
-    assert "invalid choice: '/chatter'" in err
+    assert process.returncode == 1
+    assert "no publisher on '/chatter'" in err

@@ -221,6 +221,8 @@ class EchoArgs:
     bag: str | None = None
     #: ``--at T``: one instant of the bag (bag seconds from its start, or absolute seconds).
     at_s: float | None = None
+    #: ``--namespace NS``: listen on ``NS/tf`` and ``NS/tf_static``.
+    namespace: str | None = None
     exit_code: int = 0
     error: str = ''
     show_usage: bool = False
@@ -228,7 +230,7 @@ class EchoArgs:
     show_help: bool = False
 
 
-ECHO_EXTRA_FLAGS = ('-p', '--precision', '--limit', '--json', '--bag', '--at')
+ECHO_EXTRA_FLAGS = ('-p', '--precision', '--limit', '--json', '--bag', '--at', '--namespace')
 MAX_PRECISION = 17
 MAX_COUNT = 10**18
 """The largest ``--limit`` a tool takes (a count of reports or blocks)."""
@@ -253,7 +255,7 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
             result.show_help = result.show_usage = True
             result.exit_code = 1
             return result
-        elif token in ('--bag', '--at'):
+        elif token in ('--bag', '--at', '--namespace'):
             if index == len(args) - 1:
                 result.error = f'{token} needs a value'
                 result.exit_code = 2
@@ -261,6 +263,8 @@ def parse_echo_args(args: list[str]) -> EchoArgs:
             index += 1
             if token == '--bag':
                 result.bag = args[index]
+            elif token == '--namespace':
+                result.namespace = args[index]
             else:
                 at = c_strtod(args[index])
                 if at is None or at.length != len(args[index]) or not math.isfinite(at.value):
@@ -348,3 +352,38 @@ def wait_time_error(wait_time: float) -> str | None:
     if wait_time >= 0 and math.isfinite(wait_time):
         return None
     return f'--wait-time must be a finite number of seconds >= 0, got {wait_time}'
+
+
+# ---------------------------------------------------------------------------------------------
+# --namespace NS (every tool that reads TF)
+
+NAMESPACE_HELP = (
+    'listen to a namespaced robot: NS/tf and NS/tf_static (and NS/robot_description) instead '
+    'of the global topics, as --ros-args -r /tf:=NS/tf -r /tf_static:=NS/tf_static would'
+)
+#: The global topics ``--namespace`` moves under the namespace.
+NAMESPACED_TOPICS = ('/tf', '/tf_static', '/robot_description')
+
+
+def namespace_ros_args(namespace: str) -> list[str]:
+    """
+    Return the ``--ros-args`` remaps that make the TF topics those of ``namespace``.
+
+    ``robot1``, ``/robot1`` and ``/robot1/`` all mean ``/robot1``; ``/`` is the global one.
+
+    :raises ValueError: for a name that is not a valid ROS namespace (rmw's rules).
+    """
+    from tf_demo.transport.dds.names import InvalidNameError
+    from tf_demo.transport.dds.names import validate_namespace
+
+    absolute = '/' + namespace.strip().strip('/')
+    try:
+        validate_namespace(absolute)
+    except InvalidNameError as error:
+        reason = str(error).splitlines()[0].removeprefix('Invalid namespace: ').rstrip(':')
+        msg = f"--namespace '{_shown(namespace)}' is not a valid namespace: {reason}"
+        raise ValueError(msg) from None
+    if absolute == '/':
+        return []
+    remaps = [['-r', f'{topic}:={absolute}{topic}'] for topic in NAMESPACED_TOPICS]
+    return ['--ros-args', *(token for remap in remaps for token in remap)]

@@ -35,6 +35,8 @@ from typing import Protocol
 from typing import TYPE_CHECKING
 
 from tf_demo import transport
+from tf_demo.cli._args import NAMESPACE_HELP
+from tf_demo.cli._args import namespace_ros_args
 from tf_demo.cli._observations import Observation
 from tf_demo.cli._observations import ObservedTransform
 from tf_demo.cli._observations import TF_STATIC_TOPIC
@@ -202,6 +204,11 @@ def finish_after_damage(tool: str, code: int, damage: Exception | None) -> int:
     return max(code, 1)
 
 
+def add_namespace_option(parser: argparse.ArgumentParser) -> None:
+    """Give a reading tool ``--namespace NS`` (:func:`tool_main` turns it into remaps)."""
+    parser.add_argument('--namespace', metavar='NS', help=NAMESPACE_HELP)
+
+
 class ToolError(Exception):
     """A problem the tool reports as one line on stderr before exiting with code 1."""
 
@@ -230,6 +237,12 @@ def tool_main(
     tool_args, ros_args = split_ros_args(sys.argv[1:] if args is None else args)
     options = parser.parse_args(tool_args)
     problem = options_error(options)
+    namespace = getattr(options, 'namespace', None)
+    if problem is None and namespace is not None:
+        try:
+            ros_args = [*ros_args, *namespace_ros_args(namespace)]
+        except ValueError as error:
+            problem = str(error)
     if problem is not None:
         print_error(tool, problem)
         return 2

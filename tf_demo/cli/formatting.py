@@ -55,6 +55,7 @@ ECHO_EXTRAS_USAGE = (
     '  --bag PATH          echo from a rosbag2 recording (a folder, .mcap or .db3) instead\n'
     '  --at T              with --bag: only the instant T (seconds from the bag start, or\n'
     '                      absolute seconds)\n'
+    '  --namespace NS      listen on NS/tf and NS/tf_static (a namespaced robot)\n'
     '  -h, --help          this text (a wrong argument count prints the first part only, as\n'
     '                      tf2_echo does)\n'
 )

@@ -48,6 +48,7 @@ from tf_demo.cli._doctor_report import format_report_json
 from tf_demo.cli._doctor_report import summarize
 from tf_demo.cli._doctor_robot import RobotInfo
 from tf_demo.cli._doctor_robot import RobotJoint
+from tf_demo.cli._live import add_namespace_option
 from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import TfRecorder
@@ -90,6 +91,7 @@ def build_parser() -> argparse.ArgumentParser:
         version=version_line(),
         help="print tf_demo's version and build (compiled or interpreted), then exit",
     )
+    add_namespace_option(parser)
     return parser
 
 

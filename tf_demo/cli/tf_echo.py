@@ -38,6 +38,7 @@ import sys
 import time
 
 from tf_demo.cli._args import EchoArgs
+from tf_demo.cli._args import namespace_ros_args
 from tf_demo.cli._args import parse_echo_args
 from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import run_tool
@@ -189,6 +190,12 @@ def main(args: list[str] | None = None) -> int:
         return options.exit_code
     if options.bag is not None:
         return _echo_bag(options)
+    if options.namespace is not None:
+        try:
+            ros_args = [*ros_args, *namespace_ros_args(options.namespace)]
+        except ValueError as error:
+            print(error, file=sys.stderr, flush=True)
+            return 2
     return run_tool(TOOL, ros_args, lambda: _echo(options))
 
 

@@ -35,6 +35,8 @@ from typing import TYPE_CHECKING
 
 from tf_demo import transport
 from tf_demo.cli._args import count_argument
+from tf_demo.cli._args import namespace_ros_args
+from tf_demo.cli._live import add_namespace_option
 from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import log_unnamed
 from tf_demo.cli._live import print_error
@@ -234,6 +236,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument(
         '--bag', metavar='PATH', help='report on a rosbag2 recording instead of listening'
     )
+    add_namespace_option(parser)
     return parser
 
 
@@ -252,6 +255,11 @@ def main(args: list[str] | None = None) -> int:
         log_unnamed('INFO', 'TF_Monitor: usage: tf2_monitor framea frameb')
         return 255
     problem = options_error(options)
+    if problem is None and options.namespace is not None:
+        try:
+            ros_args = [*ros_args, *namespace_ros_args(options.namespace)]
+        except ValueError as error:
+            problem = str(error)
     if problem is not None:
         print_error('tf_monitor', problem)
         return 2

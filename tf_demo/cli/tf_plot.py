@@ -32,6 +32,7 @@ from pathlib import Path
 import sys
 from typing import Any
 
+from tf_demo.cli._live import add_namespace_option
 from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import TfRecorder
@@ -73,6 +74,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument('--tf-topic', default='/tf', help='topic of dynamic transforms')
     parser.add_argument('--tf-static-topic', default='/tf_static', help='topic of static ones')
+    add_namespace_option(parser)
     return parser
 
 

@@ -34,6 +34,7 @@ import sys
 import time
 from typing import TYPE_CHECKING
 
+from tf_demo.cli._live import add_namespace_option
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
 
@@ -62,6 +63,7 @@ def build_parser() -> argparse.ArgumentParser:
         metavar='TOPIC', help=f'default: /tf /tf_static; any of {sorted(TOPIC_TYPES)}',
     )  # fmt: skip
     parser.add_argument('--storage', choices=STORAGES, default='mcap', help='rosbag2 storage')
+    add_namespace_option(parser)
     return parser
 
 

@@ -45,6 +45,7 @@ import threading
 from typing import Any
 from typing import TYPE_CHECKING
 
+from tf_demo.cli._live import add_namespace_option
 from tf_demo.cli._live import tool_main
 from tf_demo.cli._live import ToolError
 from tf_demo.cli._view_model import build_scene
@@ -121,6 +122,7 @@ def build_parser() -> argparse.ArgumentParser:
         metavar='SECONDS',
         help='a dynamic frame without data for this long is shown as stale',
     )
+    add_namespace_option(parser)
     return parser
 
 

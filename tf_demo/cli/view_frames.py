@@ -33,6 +33,7 @@ import time
 from typing import Protocol
 
 from tf_demo.cli._args import wait_time_error
+from tf_demo.cli._live import add_namespace_option
 from tf_demo.cli._live import finish_after_damage
 from tf_demo.cli._live import listen
 from tf_demo.cli._live import TfRecorder
@@ -73,6 +74,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument(
         '--bag', metavar='PATH', help='Draw the tree of a rosbag2 recording instead of listening'
     )
+    add_namespace_option(parser)
     return parser
 
 
