@@ -93,6 +93,16 @@ def _why_and_fix(frame: str, below: str | None, robot_link: bool) -> tuple[str, 
     return ('no node publishes it', f"Start the node that should publish '{frame}'.")
 
 
+def rep105_advice(frame: str, parent_of: Mapping[str, str]) -> str | None:
+    """Return why REP 105's ``frame`` is missing from this tree and the fix, if it names it."""
+    known = set(parent_of) | set(parent_of.values())
+    below = None if frame in known else _rep105_gap(frame, parent_of, known)
+    if below is None:
+        return None
+    why, fix = _why_and_fix(frame, below, robot_link=False)
+    return f'{why[0].upper()}{why[1:]}. {fix}'
+
+
 def expected_frames(
     parent_of: Mapping[str, str],
     *,
