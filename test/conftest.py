@@ -403,8 +403,11 @@ class ProcessOutput:
         self.lines: list[str] = []
         """Lines of both streams in arrival order."""
         self._arrived = threading.Condition()
-        for stream, sink in ((process.stdout, self.stdout), (process.stderr, self.stderr)):
-            if stream is not None:  # None: not a pipe (stderr merged into stdout)
+        pipes = [(process.stdout, self.stdout), (process.stderr, self.stderr)]
+        # None: not a pipe (stderr merged into stdout)
+        self._open = sum(1 for stream, _ in pipes if stream is not None)
+        for stream, sink in pipes:
+            if stream is not None:
                 threading.Thread(target=self._pump, args=(stream, sink), daemon=True).start()
 
     def _pump(self, stream: IO[str], sink: list[str]) -> None:
@@ -414,9 +417,16 @@ class ProcessOutput:
                 sink.append(line)
                 self.lines.append(line)
                 self._arrived.notify_all()
+        with self._arrived:
+            self._open -= 1  # at the end of both, no line can come any more
+            self._arrived.notify_all()
 
     def line_where(self, matches: Callable[[str], bool], timeout: float) -> str | None:
-        """Return the first line (already seen or arriving within ``timeout`` s) that matches."""
+        """
+        Return the first line (already seen or arriving within ``timeout`` s) that matches.
+
+        None at once when the process closed its output without one.
+        """
         deadline = time.monotonic() + timeout
         checked = 0
         with self._arrived:
@@ -426,7 +436,7 @@ class ProcessOutput:
                         return line
                 checked = len(self.lines)
                 remaining = deadline - time.monotonic()
-                if remaining <= 0:
+                if remaining <= 0 or self._open == 0:
                     return None
                 self._arrived.wait(remaining)
 
@@ -439,7 +449,7 @@ class ProcessOutput:
         if line is None:
             where = 'containing' if anywhere else 'starting with'
             pytest.fail(
-                f'no line {where} {text!r} within {timeout} s; '
+                f'no line {where} {text!r} within {timeout} s (or before the output ended); '
                 f'stdout={self.stdout} stderr={self.stderr}'
             )
         return line

@@ -61,7 +61,11 @@ def test_joint_states_that_never_name_the_joint_are_reported_as_such():
 
 
 def test_a_joint_with_a_position_or_a_robot_not_in_tf_is_not_blamed():
-    """With the position (a mimic follows its source) or with no robot link in tf: no blame."""
+    """
+    With the position (a mimic follows its source) or with no robot link in tf: no joint blamed.
+
+    A robot none of whose links tf has is robot_state_publisher's absence (test_doctor_expected).
+    """
     named = RobotInfo(REVOLUTE_ROBOT, 5, frozenset({'frame_1_to_frame_2'}))
     findings = diagnose([static('world', 'frame_1')], frames=['frame_2'], robot=named)
     assert kinds(findings) == ['missing_frame']
@@ -69,4 +73,4 @@ def test_a_joint_with_a_position_or_a_robot_not_in_tf_is_not_blamed():
     unrelated = diagnose(
         [static('map', 'odom')], frames=['frame_2'], robot=RobotInfo(REVOLUTE_ROBOT)
     )
-    assert kinds(unrelated) == ['missing_frame']
+    assert kinds(unrelated) == ['missing_frame', 'robot_links_missing']

@@ -50,7 +50,7 @@ def test_zero_stamps():
         Observation(TF_TOPIC, T0 + i, (ObservedTransform('odom', 'base_link', 0),))
         for i in range(5)
     ]
-    assert kinds(diagnose(zero)) == ['zero_stamps']
+    assert kinds(diagnose(zero)) == ['rep105_frame_missing', 'zero_stamps']  # no map
 
 
 def test_sparse_data():
@@ -135,14 +135,17 @@ def test_a_fixed_mount_sent_repeatedly_on_tf_belongs_on_tf_static():
     assert finding.fix.startswith('Publish a fixed mount once on /tf_static')
     assert 'faster' not in finding.fix
     fast = diagnose([*stream('base_link', 'laser', values=[(0.1, 0.0, 0.2)])], listen_ns=2 * S)
-    assert [(f.kind, f.severity) for f in fast] == [('fixed_mount_on_tf', 'info')]
+    assert [(f.kind, f.severity) for f in fast] == [
+        ('rep105_frame_missing', 'info'),  # base_link without odom
+        ('fixed_mount_on_tf', 'info'),
+    ]
     assert exit_code(fast) == 0
 
 
 def test_standing_still_is_not_a_fixed_mount():
     """Odometry of a robot at rest and a robot joint at rest keep the usual advice."""
     resting = stream('odom', 'base_link', rate_hz=1.0, seconds=4.0, values=[(1.0, 0.0, 0.0)])
-    assert kinds(diagnose(resting)) == ['sparse_data']
+    assert kinds(diagnose(resting)) == ['rep105_frame_missing', 'sparse_data']  # no map
     joint = stream('frame_1', 'frame_2', rate_hz=1.0, seconds=4.0, values=[(1.0, 0.0, 0.0)])
     robot = RobotInfo(REVOLUTE_ROBOT, 4, frozenset({'frame_1_to_frame_2'}))
     assert kinds(diagnose(joint, robot=robot)) == ['sparse_data']

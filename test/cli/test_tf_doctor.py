@@ -28,6 +28,10 @@ from tool_runs import static
 
 pytestmark = [pytest.mark.dds]
 
+MAP_ODOM_COMMAND = (
+    'ros2 run tf_demo static_transform_publisher --frame-id map --child-frame-id odom'
+)
+
 
 class FindingRecord(TypedDict):
     """One finding of ``tf_doctor --json``."""
@@ -169,3 +173,40 @@ def test_doctor_finds_publishers_with_incompatible_qos(spawn, tf_peers):
     assert code == 1
     assert found == {'1 publisher on /tf', '1 publisher on /tf_static'}
     assert report['summary']['frames'] == 2
+
+
+def test_doctor_explains_rvizs_missing_map_fixed_frame(spawn, tf_peers):
+    """
+    odom→base_link with no map (the guide's "Fixed Frame [map] does not exist"): a note with the
+    command; once a node's lookups of 'map' fail (its warnings on /rosout), an error.
+    """
+    tf_peers(dynamic('odom', 'base_link', rate=20.0), static('base_link', 'laser'))
+    code, report = doctor(spawn)
+    assert (code, report['healthy']) == (0, True)
+    [note] = report['findings']
+    assert (note['kind'], note['severity'], note['frames']) == (
+        'rep105_frame_missing',
+        'info',
+        ['map'],
+    )
+    assert MAP_ODOM_COMMAND in note['fix']
+
+    listener = spawn.start(
+        'tf_listener',
+        '--ros-args',
+        '-p',
+        'target_frame:=map',
+        '-p',
+        'source_frame:=laser',
+        '-p',
+        'period:=0.2',
+    )
+    for line in listener.stderr:  # bounded by the process's own output
+        if '"map" passed to lookupTransform argument target_frame does not exist' in line:
+            break
+    code, report = doctor(spawn)
+    assert (code, report['healthy']) == (1, False)
+    [error] = report['findings']
+    assert (error['kind'], error['frames']) == ('looked_up_frame_missing', ['map'])
+    assert 'no localisation' in error['message']
+    assert MAP_ODOM_COMMAND in error['fix']

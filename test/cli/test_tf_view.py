@@ -189,6 +189,23 @@ def test_a_split_tree_is_shown_with_a_warning(spawn: Processes, browser: Any) ->
     screenshot(browser, 'split_tree')
 
 
+def test_a_missing_fixed_frame_is_named_on_the_page_and_in_the_log(
+    spawn: Processes, browser: Any
+) -> None:
+    """--fixed-frame map on odom→base_link: the page and the log say odom is drawn, and why."""
+    spawn.start(
+        'static_transform_publisher', '--frame-id', 'odom', '--child-frame-id', 'base_link'
+    )
+    output, url = start_view(spawn, '--fixed-frame', 'map')
+    line = output.wait_for_line('Fixed frame [map] does not exist', anywhere=True)
+    assert 'drawing from [odom]' in line
+    assert '--frame-id map --child-frame-id odom' in line
+    browser.get(url)
+    text = wait_for_text(browser, 'Fixed frame [map] does not exist: drawing from [odom]')
+    assert 'no localisation' in text
+    assert 'Fixed frame: odom' in text
+
+
 def test_killing_a_publisher_turns_its_frames_stale(spawn: Processes, browser: Any) -> None:
     """dynamic_tf_pub stops: base_link is marked stale after --stale-after seconds."""
     spawn.start('static_tf_pub')

@@ -102,7 +102,28 @@ def test_a_split_tree_warns_and_draws_islands_from_their_own_root():
 def test_an_unknown_fixed_frame_falls_back_with_a_warning():
     scene = build_scene(two_frames_and_a_circle(), 'nowhere', T0)
     assert scene.fixed_frame == 'world'
-    assert scene.warnings == ('Fixed frame [nowhere] does not exist.',)
+    assert scene.warnings == (
+        'Fixed frame [nowhere] does not exist: drawing from [world], the root of the largest '
+        'tree, until it does.',
+    )
+    assert scene.missing_fixed_frame == scene.warnings[0]
+
+
+def test_a_missing_map_says_what_is_drawn_instead_and_why():
+    """--fixed-frame map on odom→base_link: the warning names odom, the cause and the command."""
+    core = BufferCore(10 * SECOND, log=quiet)
+    core.set_transform('odom', 'base_link', T0, (1.0, 0.0, 0.0), IDENTITY, 'test', False)
+    scene = build_scene(core, 'map', T0)
+    assert scene.fixed_frame == 'odom'
+    assert scene.missing_fixed_frame is not None
+    assert scene.missing_fixed_frame.startswith(
+        'Fixed frame [map] does not exist: drawing from [odom]'
+    )
+    assert 'no localisation' in scene.missing_fixed_frame
+    assert (
+        'ros2 run tf_demo static_transform_publisher --frame-id map --child-frame-id odom'
+        in scene.missing_fixed_frame
+    )
 
 
 def test_stale_rate_and_age():

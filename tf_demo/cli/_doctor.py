@@ -24,7 +24,8 @@ faults produce the same findings.
 
 The checks of parents, publishers and QoS are here; the others are by concept in
 :mod:`~tf_demo.cli._doctor_tree` (trees, loops, REP 105), :mod:`~tf_demo.cli._doctor_robot`
-(joints without positions, missing frames) and :mod:`~tf_demo.cli._doctor_timing` (stamps,
+(joints without positions, missing frames), :mod:`~tf_demo.cli._doctor_expected` (frames
+that failed lookups, the robot or REP 105 expect) and :mod:`~tf_demo.cli._doctor_timing` (stamps,
 rates); :mod:`~tf_demo.cli._doctor_report` prints the result.
 """
 
@@ -34,6 +35,7 @@ from collections.abc import Mapping
 from collections.abc import Sequence
 import itertools
 
+from tf_demo.cli._doctor_expected import expected_frames
 from tf_demo.cli._doctor_model import distinct_values
 from tf_demo.cli._doctor_model import Finding
 from tf_demo.cli._doctor_model import FrameStats
@@ -71,6 +73,7 @@ def diagnose(
     thresholds: Thresholds | None = None,
     unmatched_publishers: Mapping[str, int] | None = None,
     robot: RobotInfo | None = None,
+    looked_up: Sequence[str] = (),
 ) -> list[Finding]:
     """
     Find every tf problem the observations show.
@@ -84,6 +87,7 @@ def diagnose(
         the listener (see ``TfRecorder.unmatched_publishers``).
     :param robot: the robot_description's joints and the joint names /joint_states gave, when
         known: links below a moving joint without a position are explained by that.
+    :param looked_up: frames that failed lookups named lately (in /rosout), repeats counted.
     :return: findings, errors first, in a stable order.
     """
     limits = thresholds or Thresholds()
@@ -116,6 +120,9 @@ def diagnose(
     findings.extend(loop(parent_of))
     findings.extend(disconnected(parent_of, frames))
     findings.extend(rep105(parent_of))
+    findings.extend(
+        expected_frames(parent_of, looked_up=looked_up, robot=robot, blocked=blocked, asked=frames)
+    )
     findings.extend(leading_slashes(known))
     if check_timing:
         moving = {j.child for j in (robot.joints if robot else ()) if j.type in MOVING_JOINT_TYPES}

@@ -100,7 +100,11 @@ def format_report(
             f'{warnings} warning{"s" if warnings != 1 else ""}.'
         )
     else:
-        lines.append('Healthy: no problems found.')
+        notes = len(findings)
+        lines.append(
+            'Healthy: no problems found'
+            + (f' ({notes} note{"s" if notes != 1 else ""} above).' if notes else '.')
+        )
     return '\n'.join(lines) + '\n'
 
 

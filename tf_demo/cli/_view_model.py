@@ -28,6 +28,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import NamedTuple
 
+from tf_demo.cli._doctor_expected import rep105_advice
 from tf_demo.cli._doctor_tree import islands_of
 from tf_demo.cli._doctor_tree import root_of
 from tf_demo.cli.formatting import format_echo_transform
@@ -73,6 +74,8 @@ class SceneView(NamedTuple):
     #: The roots of the trees, the fixed frame's tree first.
     roots: tuple[str, ...]
     warnings: tuple[str, ...]
+    #: The warning that the fixed frame asked for does not exist (also in ``warnings``).
+    missing_fixed_frame: str | None = None
 
 
 def parents_of(infos: Sequence[FrameInfo]) -> dict[str, str]:
@@ -139,9 +142,16 @@ def build_scene(
     roots = tree_roots(parent_of, list(infos))
     known = set(parent_of) | set(parent_of.values()) | set(infos)
     warnings: list[str] = []
+    missing = None
     if fixed_frame is not None and fixed_frame not in known:
-        if known:
-            warnings.append(f'Fixed frame [{fixed_frame}] does not exist.')
+        if roots:
+            missing = (
+                f'Fixed frame [{fixed_frame}] does not exist: drawing from [{roots[0]}], the '
+                'root of the largest tree, until it does.'
+            )
+            advice = rep105_advice(fixed_frame, parent_of)
+            missing += f' {advice}' if advice else ''
+            warnings.append(missing)
         fixed_frame = None
     if fixed_frame is None and roots:
         fixed_frame = roots[0]
@@ -162,7 +172,7 @@ def build_scene(
             timing = _timing(infos.get(frame), now_ns, stale_after_s)
             parent = parent_of.get(frame)
             frames.append(FrameView(frame, parent, root, depth, translation, rotation, *timing))
-    return SceneView(fixed_frame, tuple(frames), tuple(roots), tuple(warnings))
+    return SceneView(fixed_frame, tuple(frames), tuple(roots), tuple(warnings), missing)
 
 
 def _timing(

@@ -25,7 +25,9 @@ It reports frames that do not exist (with close matches), disconnected trees (ea
 likely missing link, such as odom→base_link), frames with two parents or publishers fighting, a
 frame on both /tf and /tf_static, stamps far in the future or past (clock or use_sim_time
 mismatch), data too sparse for lookups or streams that stopped, loops, REP 105 order, frame ids
-with a leading '/', and publishers whose QoS never matches tf2's listeners. Exit code 0 when
+with a leading '/', publishers whose QoS never matches tf2's listeners, and frames that are
+expected but missing (named by failed lookups in /rosout, links of /robot_description, REP 105's
+map and odom). Exit code 0 when
 healthy, 1 when problems were found, 2 for bad arguments. The analysis is
 :func:`tf_demo.cli._doctor.diagnose`.
 """
@@ -42,6 +44,7 @@ from typing import TYPE_CHECKING
 from tf_demo.build_info import version_line
 from tf_demo.cli._args import wait_time_error
 from tf_demo.cli._doctor import diagnose
+from tf_demo.cli._doctor_expected import frames_in_failed_lookups
 from tf_demo.cli._doctor_report import exit_code
 from tf_demo.cli._doctor_report import format_report
 from tf_demo.cli._doctor_report import format_report_json
@@ -104,6 +107,7 @@ def _report(
     listen_ns: int,
     unmatched: dict[str, int] | None = None,
     robot: RobotInfo | None = None,
+    looked_up: Sequence[str] = (),
     start_ns: int | None = None,
 ) -> int:
     findings = diagnose(
@@ -113,6 +117,7 @@ def _report(
         check_timing=timing,
         unmatched_publishers=unmatched,
         robot=robot,
+        looked_up=looked_up,
     )
     summary = summarize(observations)
     if options.json:
@@ -124,6 +129,7 @@ def _report(
 
 
 MAX_JOINT_NAMES = 10_000
+"""At most this many joint names (and frames of failed lookups) are kept."""
 
 
 class _StringLike(Protocol):
@@ -210,6 +216,47 @@ class RobotRecorder:
         return RobotInfo(joints, messages, names)
 
 
+class _LogLike(Protocol):
+    """The part of an ``rcl_interfaces/Log`` of either world that is read here."""
+
+    msg: str
+
+
+class LookupRecorder:
+    """
+    Hear ``/rosout`` (its recent history too) for tf2's "frame does not exist" errors.
+
+    A node whose lookups fail logs them (tf_listener's "Could not transform ..."); the frames they
+    name are frames the tree is expected to have.
+    """
+
+    def __init__(self, node: Node) -> None:
+        from tf_demo.transport.messages import message_module
+        from tf_demo.transport.qos import DurabilityPolicy
+        from tf_demo.transport.qos import QoSProfile
+        from tf_demo.transport.qos import ReliabilityPolicy
+
+        self._lock = threading.Lock()
+        self._frames: list[str] = []
+        rosout = QoSProfile(  # rcl's /rosout profile, whose last 1000 messages stay for 10 s
+            depth=1000,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL,
+            reliability=ReliabilityPolicy.RELIABLE,
+        )
+        log_type = message_module('rcl_interfaces').Log
+        self._subscription = node.create_subscription(log_type, '/rosout', self._on_log, rosout)
+
+    def _on_log(self, message: _LogLike) -> None:
+        frames = frames_in_failed_lookups([str(message.msg)])
+        with self._lock:
+            self._frames.extend(frames[: MAX_JOINT_NAMES - len(self._frames)])
+
+    def frames(self) -> list[str]:
+        """Return the frames failed lookups named, repeats kept."""
+        with self._lock:
+            return list(self._frames)
+
+
 def _listen_and_report(options: argparse.Namespace) -> int:
     from tf_demo import transport
 
@@ -217,6 +264,7 @@ def _listen_and_report(options: argparse.Namespace) -> int:
     try:
         recorder = TfRecorder(node)
         robot = RobotRecorder(node)
+        lookups = LookupRecorder(node)
         start = node.get_clock().now().nanoseconds
         listen(node, options.wait_time)
         listen_ns = node.get_clock().now().nanoseconds - start
@@ -228,6 +276,7 @@ def _listen_and_report(options: argparse.Namespace) -> int:
             listen_ns=listen_ns,
             unmatched=recorder.unmatched_publishers(),
             robot=robot.info(),
+            looked_up=lookups.frames(),
         )
     finally:
         node.destroy_node()

@@ -146,9 +146,11 @@ def _wxyz(rotation: tuple[float, float, float, float]) -> tuple[float, float, fl
 class TfView:
     """The viser scene and panels, redrawn from a :class:`SceneView` on every update."""
 
-    def __init__(self, server: Any, fixed_frame: str | None) -> None:
+    def __init__(self, server: Any, fixed_frame: str | None, log: Callable[[str], object]) -> None:
         self.server = server
         self.fixed_frame = fixed_frame
+        self._log = log
+        self._missing: str | None = None  # the missing fixed frame's warning, once logged
         self.selected: str | None = None
         self._axes: Any = None
         self._origins: Any = None
@@ -188,11 +190,17 @@ class TfView:
     def update(self, core: BufferCore, now_ns: int, stale_after_s: float) -> SceneView:
         """Draw the buffer's frames as they are at ``now_ns``."""
         scene = build_scene(core, self.fixed_frame, now_ns, stale_after_s)
+        if scene.missing_fixed_frame != self._missing:
+            self._missing = scene.missing_fixed_frame
+            if self._missing is not None:
+                self._log(self._missing)
         names = tuple(frame.name for frame in scene.frames)
         if tuple(self._select.options) != ('', *sorted(names)):
             self._select.options = ('', *sorted(names))
-            fixed_options = (AUTO_FIXED_FRAME, *sorted(names))
-            self._fixed.options = fixed_options
+            # the chosen fixed frame stays a choice while it does not exist (else the
+            # dropdown would fall back to the automatic one, silently)
+            asked = {self.fixed_frame} if self.fixed_frame is not None else set()
+            self._fixed.options = (AUTO_FIXED_FRAME, *sorted({*names, *asked}))
         shown = [f for f in scene.frames if f.translation is not None and f.rotation is not None]
         self._draw_axes(shown)
         self._draw_labels(shown)
@@ -446,7 +454,7 @@ def _serve(options: argparse.Namespace) -> int:
         listener.unregister()
         node.destroy_node()
         raise ToolError(f'cannot serve on {options.host}:{options.port}: {error}') from error
-    view = TfView(server, options.fixed_frame)
+    view = TfView(server, options.fixed_frame, node.get_logger().warning)
     robot = RobotPanel(server, options.publish_joint_states)
     if model is not None:
         robot.set_robot(model, os.path.dirname(os.path.abspath(options.urdf)))
