@@ -28,6 +28,7 @@ NODES = [
     'point_transformer',
     'robot_state_publisher',
     'joint_state_publisher',
+    'tf_relay',
 ]
 TOOLS = [
     'tf_echo',

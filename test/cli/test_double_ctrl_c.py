@@ -57,6 +57,7 @@ def executable_arguments(tmp_path: Path) -> dict[str, list[str]]:
         'point_transformer': [],
         'robot_state_publisher': ['--ros-args', '-p', f'urdf_file:={urdf}'],
         'joint_state_publisher': [urdf],
+        'tf_relay': ['/robot1', '/robot2'],
         'tf_echo': ['a', 'b'],
         'static_transform_publisher': ['--frame-id', 'a', '--child-frame-id', 'b'],
         'view_frames': ['-t', '600', '-o', str(tmp_path / 'frames')],

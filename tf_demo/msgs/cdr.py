@@ -37,6 +37,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from collections.abc import Sequence
 import functools
+from struct import error as struct_error
 from struct import Struct
 from typing import Any
 from typing import cast
@@ -564,19 +565,24 @@ class TfMessageEncoder:
     Encode ``tf2_msgs/msg/TFMessage`` CDR bytes straight from transform tuples, no objects.
 
     The bytes are :func:`serialize`'s (CDR_LE). Every frame name gets ``frame_prefix`` in front
-    and every transform the same stamp: robot_state_publisher's hot path. The names and padding
-    of each (parent, child) pair are built once; a message then costs one ``pack`` per transform
-    (faster here than one whole-message layout).
+    (or is renamed by ``rename``) and, with :meth:`encode`, every transform the same stamp:
+    robot_state_publisher's hot path; :meth:`encode_stamped` keeps each transform's own stamp
+    (tf_relay's). The names and padding of each (parent, child) pair are built once; a message
+    then costs one ``pack`` per transform (faster here than one whole-message layout).
     """
 
-    def __init__(self, frame_prefix: str = '') -> None:
+    def __init__(self, frame_prefix: str = '', rename: Callable[[str], str] | None = None) -> None:
         self.frame_prefix = frame_prefix
+        self._rename = rename
         self._pairs: dict[tuple[str, str], _PairPacks] = {}
 
+    def _name(self, frame: str) -> str:
+        return self.frame_prefix + frame if self._rename is None else self._rename(frame)
+
     def _pair(self, parent: str, child: str) -> _PairPacks:
-        names = _cdr_string(self.frame_prefix + parent)
+        names = _cdr_string(self._name(parent))
         names += b'\x00' * (-len(names) % 4)
-        names += _cdr_string(self.frame_prefix + child)
+        names += _cdr_string(self._name(child))
         # The first transform starts 4 mod 8 (after the count), the rest 0 mod 8; the 8-byte
         # stamp keeps that, then the doubles need 8-byte alignment.
         first = names + b'\x00' * (-(4 + 8 + len(names)) % 8)
@@ -604,6 +610,27 @@ class TfMessageEncoder:
                 first = False
             else:
                 parts.append(packs[2](sec, nanosec, packs[3], tx, ty, tz, qx, qy, qz, qw))
+        return b''.join(parts)
+
+    def encode_stamped(self, transforms: Sequence[TransformTuple]) -> bytes:
+        """
+        Return the serialised TFMessage of decoded transforms, each with its own stamp.
+
+        :raises OverflowError: a stamp a ``builtin_interfaces/Time`` cannot hold.
+        """
+        parts = [_HEADER_AND_COUNT.pack(_CDR_LE_HEADER, len(transforms))]
+        pairs = self._pairs
+        first = True
+        for parent, child, stamp_ns, (tx, ty, tz), (qx, qy, qz, qw) in transforms:
+            packs = pairs.get((parent, child)) or self._pair(parent, child)
+            pack, names = (packs[0], packs[1]) if first else (packs[2], packs[3])
+            first = False
+            sec, nanosec = divmod(stamp_ns, 1_000_000_000)
+            try:
+                parts.append(pack(sec, nanosec, names, tx, ty, tz, qx, qy, qz, qw))
+            except struct_error:
+                msg = f'stamp {stamp_ns} ns does not fit a builtin_interfaces/Time'
+                raise OverflowError(msg) from None
         return b''.join(parts)
 
 
