@@ -80,7 +80,6 @@ def relay_command(robots: int) -> list[str]:
 def run(robots: int, seconds: float) -> None:
     from tf_demo import transport
     from tf_demo.msgs.cdr import TfMessageEncoder
-    from tf_demo.transport.executors import SingleThreadedExecutor
     from tf_demo.transport.messages import tf2_msgs
     from tf_demo.transport.qos import DynamicBroadcasterQoS
     from tf_demo.transport.qos import DynamicListenerQoS
@@ -109,14 +108,17 @@ def run(robots: int, seconds: float) -> None:
                 late.append(data[8:16])
 
     late: list[bytes] = []  # relayed before its direct copy arrived (counted, then matched)
+    # The receiving side as the relay's own: an internal node served by its own thread (rcl's
+    # wait set under rclpy), so both copies of a message wait the same, short, way.
+    inputs = transport.create_internal_node('bench_relay_inputs')
     subs = [
-        node.create_subscription(
+        inputs.create_subscription(
             tf2_msgs.TFMessage, f'/robot{r}/tf', on_direct, DynamicListenerQoS(), raw=True
         )
         for r in range(robots)
     ]
     subs.append(
-        node.create_subscription(
+        inputs.create_subscription(
             tf2_msgs.TFMessage, '/tf', on_relayed, DynamicListenerQoS(), raw=True
         )
     )
@@ -126,16 +128,7 @@ def run(robots: int, seconds: float) -> None:
     ]
     encoders = [TfMessageEncoder() for _ in range(robots)]
     frames = [robot_frames(r) for r in range(robots)]
-    executor = SingleThreadedExecutor()
-    executor.add_node(node)
-    stop = threading.Event()
-
-    def spin() -> None:
-        while not stop.is_set():
-            executor.spin_once(timeout_sec=0.05)
-
-    spinner = threading.Thread(target=spin, daemon=True)
-    spinner.start()
+    server = transport.SubscriptionServer(inputs, subs, 'bench_relay_inputs')
     sent = 0
 
     def publish(slot: int) -> None:
@@ -182,12 +175,9 @@ def run(robots: int, seconds: float) -> None:
             received = len(added_ns) + len(late)
             values_us = [value / 1000 for value in added_ns]
     finally:
-        stop.set()
-        spinner.join(timeout=5)
+        server.stop()
         relay.send_signal(2)
         relay.communicate(timeout=15)
-        for sub in subs:
-            node.destroy_subscription(sub)
         node.destroy_node()
         transport.shutdown()
     print(

@@ -392,11 +392,9 @@ def test_awaited_lookup_in_a_single_threaded_executor_resolves_and_times_out(
 
 def test_the_exit_hook_skips_a_spin_thread_stopped_before_it_started() -> None:
     """A Ctrl-C between registering the private thread and starting it: exit stays quiet."""
-    from tf_demo.ros import transform_listener
-
     never_started = threading.Thread(target=lambda: None, daemon=True)
     stop = threading.Event()
-    transform_listener._spin_threads[never_started] = stop
-    transform_listener._stop_spin_threads_at_exit()  # raised RuntimeError: cannot join ...
+    transport._serving_threads[never_started] = stop
+    transport._stop_serving_threads_at_exit()  # raised RuntimeError: cannot join ...
     assert stop.is_set()
-    assert never_started not in transform_listener._spin_threads
+    assert never_started not in transport._serving_threads

@@ -41,7 +41,6 @@ The authority recorded for each transform is ``'default_authority'``, as in tf2_
 
 from __future__ import annotations
 
-import atexit
 from collections.abc import Callable
 from collections.abc import Mapping
 import contextlib
@@ -53,9 +52,8 @@ from tf_demo.msgs import cdr
 from tf_demo.msgs import tf2_msgs as standalone_tf2_msgs
 from tf_demo.msgs.log_throttle import PerWriterThrottle
 from tf_demo.ros.buffer import Buffer
-from tf_demo.transport import backend_module
-from tf_demo.transport import create_node
-from tf_demo.transport import ok
+from tf_demo.transport import create_internal_node
+from tf_demo.transport import SubscriptionServer
 from tf_demo.transport.callback_groups import ReentrantCallbackGroup
 from tf_demo.transport.messages import tf2_msgs
 from tf_demo.transport.qos import DynamicListenerQoS
@@ -74,29 +72,6 @@ DEFAULT_STATIC_TF_TOPIC = '/tf_static'
 DEFAULT_AUTHORITY = 'default_authority'
 SPIN_STOP_CHECK_S = 0.1
 """How long the private executor blocks per ``spin_once`` before checking for shutdown."""
-SPIN_THREAD_JOIN_S = 5.0
-"""How long stopping a listener waits for its private thread (a hang guard)."""
-
-_spin_threads: dict[threading.Thread, threading.Event] = {}
-"""The private spin threads still running, with the event that stops each."""
-
-
-@atexit.register
-def _stop_spin_threads_at_exit() -> None:
-    """
-    Stop and join every private spin thread before the interpreter finalises.
-
-    A listener not unregistered (its owner interrupted between creating it and its ``try``)
-    leaves a daemon thread blocked in the middleware with the GIL released. Under rclpy that
-    thread, waking while Python finalises, is ended by ``pthread_exit`` inside pybind11's
-    ``noexcept`` GIL guard: ``terminate called without an active exception`` and exit -6.
-    ``atexit`` runs before finalisation, while the thread can still return on its own.
-    """
-    for thread, stop in list(_spin_threads.items()):
-        stop.set()
-        if thread.ident is not None:  # registered before start(): a stop may come in between
-            thread.join(timeout=SPIN_THREAD_JOIN_S)
-    _spin_threads.clear()
 
 
 class TransformSink(Protocol):
@@ -139,7 +114,7 @@ class TransformListener:
         """
         self.buffer = buffer
         self.node = node
-        self._stop = threading.Event()
+        self._server: SubscriptionServer | None = None
         self._private_node: Node | None = None
         self.dedicated_listener_thread: threading.Thread | None = None
         self._malformed = PerWriterThrottle('malformed samples')
@@ -147,7 +122,7 @@ class TransformListener:
         self._tf_static_topic = tf_static_topic
         host = node
         if spin_thread:
-            host = self._private_node = _create_private_node(
+            host = self._private_node = create_internal_node(
                 f'transform_listener_impl_{id(self):x}'
             )
         #: Whether the subscriptions take serialised bytes (feeding one of our buffers).
@@ -182,25 +157,10 @@ class TransformListener:
         if setter is not None:
             setter(True)
         subscriptions = [sub for sub in (self.tf_sub, self.tf_static_sub) if sub is not None]
-        self.dedicated_listener_thread = threading.Thread(
-            target=self._spin,
-            args=(host, subscriptions),
-            name='tf_demo_transform_listener',
-            daemon=True,
+        self._server = SubscriptionServer(
+            host, subscriptions, 'tf_demo_transform_listener', SPIN_STOP_CHECK_S
         )
-        _spin_threads[self.dedicated_listener_thread] = self._stop
-        self.dedicated_listener_thread.start()
-
-    def _spin(self, host: Node, subscriptions: list[DdsSubscription]) -> None:
-        """Serve the subscriptions in the private thread with the world's leanest loop."""
-        try:
-            backend_module().serve_subscriptions(
-                host, subscriptions, self._stop, SPIN_STOP_CHECK_S
-            )
-        except Exception:
-            if self._stop.is_set() or not ok():
-                return
-            raise
+        self.dedicated_listener_thread = self._server.thread
 
     def callback(self, data: TFMessage) -> None:
         """Insert every transform of a ``/tf`` message."""
@@ -286,12 +246,9 @@ class TransformListener:
 
     def unregister(self) -> None:
         """Stop the private thread (if any) and destroy the subscriptions."""
-        self._stop.set()
-        thread = self.dedicated_listener_thread
-        if thread is not None and thread is not threading.current_thread():
-            thread.join(timeout=SPIN_THREAD_JOIN_S)
-        if thread is not None:
-            _spin_threads.pop(thread, None)
+        if self._server is not None:
+            self._server.stop(destroy_node=False)  # the node goes below, after its subscriptions
+            self._server = None
         self.dedicated_listener_thread = None
         self._log_pending()
         host = self._private_node if self._private_node is not None else self.node
@@ -314,14 +271,6 @@ def _writer(info: Mapping[str, object], topic: str) -> Writer:
     """
     gid = info.get('publisher_gid')
     return gid if isinstance(gid, bytes) else f"a writer on '{topic}'"
-
-
-def _create_private_node(name: str) -> Node:
-    try:
-        node: Node = create_node(name, start_parameter_services=False, enable_rosout=False)
-    except TypeError:
-        node = create_node(name)
-    return node
 
 
 def _quietly(action: Callable[[], object]) -> None:

@@ -28,8 +28,10 @@ package stays cheap. The world's classes have their own modules, each choosing o
 from __future__ import annotations
 
 import _thread
+import atexit
 from collections.abc import Callable
 from collections.abc import Sequence
+import contextlib
 import importlib
 import os
 import signal
@@ -69,8 +71,10 @@ __all__ = [
     'NodeConfigError',
     'RosArgsError',
     'StopRequest',
+    'SubscriptionServer',
     'backend_module',
     'backend_name',
+    'create_internal_node',
     'create_node',
     'import_rclpy_submodules',
     'init',
@@ -199,6 +203,81 @@ def create_node(node_name: str, **kwargs: object) -> Node:
     """Create a node of the selected backend (rclpy ``Node`` keyword arguments)."""
     node: Node = backend_module().create_node(node_name, **kwargs)
     return node
+
+
+def create_internal_node(node_name: str) -> Node:
+    """Create a hidden helper node: no parameter services, no ``/rosout`` (as tf2_ros's own)."""
+    try:
+        return create_node(node_name, start_parameter_services=False, enable_rosout=False)
+    except TypeError:  # a backend without those options
+        return create_node(node_name)
+
+
+#: The internal serving threads still running, with the event that stops each.
+_serving_threads: dict[threading.Thread, threading.Event] = {}
+#: How long stopping a server (or the process's exit) waits for its thread: a hang guard.
+SERVER_JOIN_S = 5.0
+
+
+@atexit.register
+def _stop_serving_threads_at_exit() -> None:
+    """
+    Stop and join every :class:`SubscriptionServer` thread before the interpreter finalises.
+
+    A server not stopped (its owner interrupted between creating it and its ``try``) leaves a
+    daemon thread blocked in the middleware with the GIL released. Under rclpy that thread,
+    waking while Python finalises, is ended by ``pthread_exit`` inside pybind11's ``noexcept``
+    GIL guard: ``terminate called without an active exception`` and exit -6. ``atexit`` runs
+    before finalisation, while the thread can still return on its own.
+    """
+    for thread, stop in list(_serving_threads.items()):
+        stop.set()
+        if thread.ident is not None:  # registered before start(): a stop may come in between
+            thread.join(timeout=SERVER_JOIN_S)
+    _serving_threads.clear()
+
+
+class SubscriptionServer:
+    """
+    A thread that runs the callbacks of an internal node's subscriptions, and nothing else.
+
+    Under rclpy it waits on rcl's wait set itself (``serve_subscriptions``: about a quarter of
+    the CPU per message of rclpy's executor); standalone it is a private executor. The node must
+    hold only subscriptions; ``stop`` is checked every ``period_s``.
+    """
+
+    def __init__(
+        self, node: Node, subscriptions: Sequence[object], name: str, period_s: float = 0.1
+    ) -> None:
+        """Start serving ``subscriptions`` of ``node`` in a daemon thread called ``name``."""
+        self.node = node
+        self._stop = threading.Event()
+        serve = backend_module().serve_subscriptions
+        #: The serving thread (tf2_ros's ``dedicated_listener_thread``).
+        self.thread = threading.Thread(
+            target=self._serve, args=(serve, list(subscriptions), period_s), name=name, daemon=True
+        )
+        _serving_threads[self.thread] = self._stop
+        self.thread.start()
+
+    def _serve(
+        self, serve: Callable[..., None], subscriptions: list[object], period_s: float
+    ) -> None:
+        try:
+            serve(self.node, subscriptions, self._stop, period_s)
+        except Exception:
+            if not (self._stop.is_set() or not ok()):
+                raise
+
+    def stop(self, *, destroy_node: bool = True) -> None:
+        """Stop the thread (and destroy the node unless told not to); safe to call twice."""
+        self._stop.set()
+        if self.thread is not threading.current_thread():
+            self.thread.join(timeout=SERVER_JOIN_S)
+        _serving_threads.pop(self.thread, None)
+        if destroy_node:
+            with contextlib.suppress(Exception):  # teardown is best effort
+                self.node.destroy_node()
 
 
 def _program_name(argv: Sequence[str]) -> str:
