@@ -32,11 +32,17 @@ from conftest import Spinning
 import pytest
 from tf_demo.cli._live import TfRecorder
 from tf_demo.cli._observations import Observation
-from tool_runs import run
 
 pytestmark = [pytest.mark.dds, pytest.mark.timeout(180)]
 
 S = 1_000_000_000
+
+
+def run(spawn: Processes, name: str, *args: str, timeout: float = 60) -> tuple[int, str, str]:
+    """Run one of our executables to completion; return (exit code, stdout, stderr)."""
+    process = spawn.start(name, *args)
+    out, err = process.communicate(timeout=timeout)
+    return process.returncode, out, err
 
 
 def in_namespace(namespace: str, *parameters: str) -> list[str]:
