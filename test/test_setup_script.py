@@ -51,5 +51,5 @@ def test_the_demo_installs_the_dds_backend_and_the_viewer_only():
     assert extras(demo) == {'dds', 'view'}
     assert not any('colcon' in p for p in demo), demo
     test = pip_packages('test')
-    assert extras(test) == {'dds', 'test', 'view', 'bag'}
+    assert extras(test) == {'dds', 'test', 'view', 'bag', 'docs'}
     assert 'colcon-common-extensions' in test

@@ -237,6 +237,15 @@ def _stop_serving_threads_at_exit() -> None:
     _serving_threads.clear()
 
 
+def _serve_subscriptions() -> Callable[..., None]:
+    """Return the world's loop that serves an internal node's subscriptions until told to stop."""
+    if backend_name() == 'rclpy':
+        from tf_demo.transport.rclpy_serve import serve_subscriptions
+    else:
+        from tf_demo.transport.dds.spin import serve_subscriptions
+    return serve_subscriptions
+
+
 class SubscriptionServer:
     """
     A thread that runs the callbacks of an internal node's subscriptions, and nothing else.
@@ -252,7 +261,7 @@ class SubscriptionServer:
         """Start serving ``subscriptions`` of ``node`` in a daemon thread called ``name``."""
         self.node = node
         self._stop = threading.Event()
-        serve = backend_module().serve_subscriptions
+        serve = _serve_subscriptions()
         #: The serving thread (tf2_ros's ``dedicated_listener_thread``).
         self.thread = threading.Thread(
             target=self._serve, args=(serve, list(subscriptions), period_s), name=name, daemon=True

@@ -32,9 +32,6 @@ publishes its nodes on ``ros_discovery_info`` so that ``ros2 node list`` shows t
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-import threading
-
 from tf_demo.transport.dds.callback_groups import CallbackGroup
 from tf_demo.transport.dds.callback_groups import MutuallyExclusiveCallbackGroup
 from tf_demo.transport.dds.callback_groups import ReentrantCallbackGroup
@@ -55,6 +52,7 @@ from tf_demo.transport.dds.names import validate_node_name
 from tf_demo.transport.dds.node import create_node
 from tf_demo.transport.dds.node import DdsNode
 from tf_demo.transport.dds.node import Node
+from tf_demo.transport.dds.spin import serve_subscriptions
 from tf_demo.transport.dds.spin import spin
 from tf_demo.transport.dds.spin import spin_once
 from tf_demo.transport.dds.spin import spin_until_future_complete
@@ -89,22 +87,3 @@ __all__ = [
     'validate_namespace',
     'validate_node_name',
 ]
-
-
-def serve_subscriptions(
-    node: DdsNode, subscriptions: Sequence[DdsSubscription], stop: threading.Event, period_s: float
-) -> None:
-    """
-    Run the callbacks of ``node`` (which holds ``subscriptions``) until ``stop`` or shutdown.
-
-    The standalone executor already waits on the read conditions directly: a private
-    :class:`SingleThreadedExecutor`, ``stop`` checked every ``period_s``.
-    """
-    del subscriptions  # the node's executor serves them all
-    executor = SingleThreadedExecutor()
-    executor.add_node(node)
-    try:
-        while not stop.is_set() and ok():
-            executor.spin_once(timeout_sec=period_s)
-    finally:
-        executor.shutdown()

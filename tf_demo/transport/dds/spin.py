@@ -16,9 +16,12 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 import threading
 
 from tf_demo.transport.dds.context import _context
+from tf_demo.transport.dds.context import ok
+from tf_demo.transport.dds.endpoints import DdsSubscription
 from tf_demo.transport.dds.executors import Completable
 from tf_demo.transport.dds.executors import DdsExecutor
 from tf_demo.transport.dds.executors import SingleThreadedExecutor
@@ -72,3 +75,22 @@ def spin(node: DdsNode, executor: DdsExecutor | None = None) -> None:
             chosen.spin_once(None)
     finally:
         chosen.remove_node(node)
+
+
+def serve_subscriptions(
+    node: DdsNode, subscriptions: Sequence[DdsSubscription], stop: threading.Event, period_s: float
+) -> None:
+    """
+    Run the callbacks of ``node`` (which holds ``subscriptions``) until ``stop`` or shutdown.
+
+    The standalone executor already waits on the read conditions directly: a private
+    :class:`SingleThreadedExecutor`, ``stop`` checked every ``period_s``.
+    """
+    del subscriptions  # the node's executor serves them all
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    try:
+        while not stop.is_set() and ok():
+            executor.spin_once(timeout_sec=period_s)
+    finally:
+        executor.shutdown()
