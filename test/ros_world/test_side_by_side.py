@@ -992,18 +992,32 @@ def params_file_args(directory: Path, parameters: dict[str, Any]) -> list[str]:
     return ['--ros-args', '--params-file', str(params_file)]
 
 
-@pytest.mark.parametrize('clock', ['system', 'sim'])
-@pytest.mark.parametrize('robot', ['pr2.urdf', 'panda.urdf'])
-def test_robot_state_publisher_publishes_as_upstream(
-    jazzy_env: dict[str, str], second_domain: int, robot: str, clock: str, tmp_path: Path
+@pytest.mark.parametrize(
+    ('robot', 'clock', 'prefix'),
+    [
+        ('pr2.urdf', 'system', ''),
+        ('pr2.urdf', 'sim', ''),
+        ('panda.urdf', 'system', ''),
+        ('panda.urdf', 'sim', ''),
+        ('panda.urdf', 'system', 'robot1/'),  # a fleet's robot: frame_prefix (issue 24)
+    ],
+)
+def test_robot_state_publisher_publishes_as_upstream(  # noqa: PLR0917 (pytest's parameters)
+    jazzy_env: dict[str, str],
+    second_domain: int,
+    robot: str,
+    clock: str,
+    prefix: str,
+    tmp_path: Path,
 ) -> None:
     """
     Ours and upstream's, each on its own domain, fed the same /joint_states by this process.
 
     Every /tf message (one per accepted JointState) and the /tf_static message must hold the same
-    transforms in the same order (1e-9, quaternions up to sign) with the same stamps; the node's
-    topics, types and offered QoS must be the same. With ``use_sim_time`` and no /clock both
-    stamp their static transforms with 0, so those stamps are compared too.
+    transforms (frame names with the same ``frame_prefix``, where one is given) in the same order
+    (1e-9, quaternions up to sign) with the same stamps; the node's topics, types and offered QoS
+    must be the same. With ``use_sim_time`` and no /clock both stamp their static transforms
+    with 0, so those stamps are compared too.
     """
     require_executable(jazzy_env, 'robot_state_publisher', 'robot_state_publisher')
     path = ROBOTS / robot
@@ -1015,6 +1029,8 @@ def test_robot_state_publisher_publishes_as_upstream(
     parameters: dict[str, Any] = {'robot_description': urdf}
     if clock == 'sim':
         parameters['use_sim_time'] = True
+    if prefix:
+        parameters['frame_prefix'] = prefix
     args = params_file_args(tmp_path, parameters)
     with rsp_pair(jazzy_env, second_domain, args) as sides:
         ours, theirs = sides['ours'].output, sides['theirs'].output
@@ -1062,6 +1078,7 @@ def test_robot_state_publisher_publishes_as_upstream(
     # /tf_static: one latched message with every fixed joint
     assert len(our_static) == len(their_static) == 1
     assert_same_transforms(our_static[0].transforms, their_static[0].transforms, '/tf_static')
+    assert all(t.child_frame_id.startswith(prefix) for t in our_static[0].transforms)
     our_stamps = {(t.header.stamp.sec, t.header.stamp.nanosec) for t in our_static[0].transforms}
     their_stamps = {
         (t.header.stamp.sec, t.header.stamp.nanosec) for t in their_static[0].transforms
