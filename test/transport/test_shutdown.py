@@ -286,8 +286,10 @@ node = rclpy.create_node('spinner')
 try:  # the signal may come as soon as the line is out: inside the try
     print('spinning', flush=True)
     rclpy.spin(node)
-except KeyboardInterrupt:
+except KeyboardInterrupt:  # the standalone world's SIGINT handler
     print('interrupted', flush=True)
+except Exception as error:  # rclpy's: it shuts the context down under spin
+    print('stopped by shutdown:', type(error).__name__, flush=True)
 """
 
 
@@ -309,4 +311,6 @@ def test_kill_int_stops_a_node_started_with_sigint_ignored(world_env: dict[str, 
     finally:
         process.kill()
         process.wait()
-    assert 'interrupted' in stdout, stderr
+    # It stopped (communicate did not time out): standalone by KeyboardInterrupt, under rclpy
+    # by the shutdown its handler makes (ExternalShutdownException, or RCLError in a race).
+    assert 'interrupted' in stdout or 'stopped by shutdown' in stdout, (stdout, stderr)
