@@ -55,6 +55,7 @@ NOT_IN_API = {
     'tf_demo.nodes': 'the nodes: documented one page each, with their parameters',
     'tf_demo.transport.rclpy_backend': 'imports rclpy: the ROS world behind the facades',
     'tf_demo.transport.rclpy_builders': 'imports rclpy: the ROS world behind the facades',
+    'tf_demo.transport.rclpy_serve': 'imports rclpy: the ROS world behind SubscriptionServer',
     'tf_demo.__main__': '`python -m tf_demo` prints the build',
 }
 
