@@ -75,6 +75,26 @@ CHROMIUM_FLAGS = (
 )
 
 
+@pytest.fixture
+def browser(tmp_path: Path) -> Iterator[Any]:
+    """A headless Debian chromium with its own empty profile (skips where it or selenium lacks)."""
+    if not (os.path.exists(CHROMIUM) and os.path.exists(CHROMEDRIVER)):
+        pytest.skip("needs Debian's chromium and chromium-driver")
+    webdriver = pytest.importorskip('selenium.webdriver', reason='the browser tests use selenium')
+    from selenium.webdriver.chrome.options import Options
+    from selenium.webdriver.chrome.service import Service
+
+    options = Options()
+    options.binary_location = CHROMIUM
+    for flag in (*CHROMIUM_FLAGS, f'--user-data-dir={tmp_path / "chromium"}'):
+        options.add_argument(flag)
+    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+    try:
+        yield driver
+    finally:
+        driver.quit()
+
+
 def save_artifact(name: str, data: bytes) -> Path:
     """Save ``data`` as the test artifact ``name`` and return its path."""
     ARTIFACTS.mkdir(parents=True, exist_ok=True)

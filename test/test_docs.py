@@ -23,17 +23,12 @@ keeps screenshots of both as test artifacts.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-import os
 from pathlib import Path
 import subprocess
 import sys
 import time
 from typing import Any
 
-from conftest import CHROMEDRIVER
-from conftest import CHROMIUM
-from conftest import CHROMIUM_FLAGS
 from conftest import REPO_ROOT
 from conftest import save_artifact
 import pytest
@@ -76,26 +71,6 @@ def test_the_site_builds_without_a_warning_and_its_examples_run(site: Path) -> N
     report = (site / 'doctest' / 'output.txt').read_text(encoding='utf-8')
     assert '0 failures in tests' in report, report
     assert '0 tests' not in report.splitlines()[-1], report
-
-
-@pytest.fixture
-def browser(tmp_path: Path) -> Iterator[Any]:
-    """A headless chromium with its own empty profile."""
-    if not (os.path.exists(CHROMIUM) and os.path.exists(CHROMEDRIVER)):
-        pytest.skip("needs Debian's chromium and chromium-driver")
-    webdriver = pytest.importorskip('selenium.webdriver', reason='the browser test uses selenium')
-    from selenium.webdriver.chrome.options import Options
-    from selenium.webdriver.chrome.service import Service
-
-    options = Options()
-    options.binary_location = CHROMIUM
-    for flag in (*CHROMIUM_FLAGS, f'--user-data-dir={tmp_path / "chromium"}'):
-        options.add_argument(flag)
-    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
-    try:
-        yield driver
-    finally:
-        driver.quit()
 
 
 def _open(browser: Any, page: Path, name: str) -> str:

@@ -22,7 +22,6 @@ sees it (its text, and screenshots of the WebGL canvas). Screenshots are saved u
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 import io
 import os
 from pathlib import Path
@@ -32,7 +31,6 @@ from typing import Any
 
 from conftest import CHROMEDRIVER
 from conftest import CHROMIUM
-from conftest import CHROMIUM_FLAGS
 from conftest import eventually
 from conftest import Processes
 from conftest import ProcessOutput
@@ -52,23 +50,6 @@ pytestmark = [
     pytest.mark.timeout(180),
 ]
 URDF = Path(__file__).resolve().parents[2] / 'urdf'
-
-
-@pytest.fixture
-def browser(tmp_path: Path) -> Iterator[Any]:
-    """A headless chromium with its own empty profile."""
-    from selenium.webdriver.chrome.options import Options
-    from selenium.webdriver.chrome.service import Service
-
-    options = Options()
-    options.binary_location = CHROMIUM
-    for flag in (*CHROMIUM_FLAGS, f'--user-data-dir={tmp_path / "chromium"}'):
-        options.add_argument(flag)
-    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
-    try:
-        yield driver
-    finally:
-        driver.quit()
 
 
 def start_view(spawn: Processes, *args: str) -> tuple[ProcessOutput, str]:

@@ -62,14 +62,8 @@ settings.register_profile(
     print_blob=True,
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
 )
-settings.register_profile(
-    'matrix',
-    derandomize=True,
-    max_examples=10,
-    deadline=None,
-    print_blob=True,
-    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
-)
+#: The other Pythons' runs (tools/other_pythons.sh): CI's profile with a tenth of its examples.
+settings.register_profile('matrix', settings.get_profile('ci'), max_examples=10)
 settings.register_profile(
     'nightly',
     max_examples=2000,
